@@ -1,0 +1,86 @@
+package org.miron.bt.util;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.EcoreUtil2;
+import org.miron.bt.bt.BTModel;
+import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.bt.TreeNodesModel;
+import org.miron.bt.scoping.BtGlobalScopeProvider;
+
+/** Navigation over a BT file and the files it includes. */
+public final class BtTrees {
+    private static final Pattern DECLARED_ID = Pattern.compile("\\bID\\s*=\\s*[\"']([^\"']+)[\"']");
+
+    private BtTrees() {
+    }
+
+    public static List<BehaviorTree> treesOf(Resource resource) {
+        if (resource == null || resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof BTModel)) {
+            return List.of();
+        }
+        return ((BTModel) resource.getContents().get(0)).getTrees();
+    }
+
+    /** The files a resource includes, transitively, loaded into its resource set. */
+    public static List<Resource> includedResources(Resource resource) {
+        List<Resource> result = new ArrayList<>();
+        Set<URI> seen = new LinkedHashSet<>();
+        seen.add(resource.getURI());
+        Deque<Resource> pending = new ArrayDeque<>();
+        pending.add(resource);
+        while (!pending.isEmpty()) {
+            for (URI uri : BtGlobalScopeProvider.includesOf(pending.poll())) {
+                if (seen.add(uri)) {
+                    Resource included = EcoreUtil2.getResource(resource, uri.toString());
+                    if (included != null) {
+                        result.add(included);
+                        pending.add(included);
+                    }
+                }
+            }
+        }
+        return result;
+    }
+
+    /** Trees by ID visible from a file: its own first, then its includes' (first wins, as in BT.CPP). */
+    public static Map<String, BehaviorTree> visibleTrees(Resource resource) {
+        Map<String, BehaviorTree> trees = new LinkedHashMap<>();
+        for (BehaviorTree tree : treesOf(resource)) {
+            if (tree.getName() != null) {
+                trees.putIfAbsent(tree.getName(), tree);
+            }
+        }
+        for (Resource included : includedResources(resource)) {
+            for (BehaviorTree tree : treesOf(included)) {
+                if (tree.getName() != null) {
+                    trees.putIfAbsent(tree.getName(), tree);
+                }
+            }
+        }
+        return trees;
+    }
+
+    /** Node IDs declared in a TreeNodesModel (its content is opaque, so this reads it leniently). */
+    public static Set<String> declaredNodeIds(TreeNodesModel nodesModel) {
+        Set<String> ids = new LinkedHashSet<>();
+        if (nodesModel != null && nodesModel.getContent() != null) {
+            Matcher matcher = DECLARED_ID.matcher(nodesModel.getContent());
+            while (matcher.find()) {
+                ids.add(matcher.group(1));
+            }
+        }
+        return ids;
+    }
+}
