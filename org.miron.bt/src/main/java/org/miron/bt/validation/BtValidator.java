@@ -6,7 +6,6 @@ import java.util.Map;
 import java.util.Set;
 
 import org.eclipse.emf.common.util.URI;
-import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.validation.Check;
@@ -302,7 +301,7 @@ public class BtValidator extends AbstractBtValidator {
         return (value.startsWith("{") || value.startsWith("${")) && value.endsWith("}");
     }
 
-    private static EObject attribute(List<Attribute> attributes, String name) {
+    private static Attribute attribute(List<Attribute> attributes, String name) {
         return BtAttributes.find(attributes, name);
     }
 }
