@@ -1,0 +1,41 @@
+package org.miron.generator.cli;
+
+import java.io.File;
+import java.io.PrintWriter;
+import java.util.List;
+import java.util.concurrent.Callable;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/** `miron check FILE...`: validates models and everything they import. */
+@Command(name = "check", mixinStandardHelpOptions = true,
+        description = "Checks model files (and the files they import); prints file:line:col: error: message.",
+        exitCodeListHeading = "Exit codes:%n",
+        exitCodeList = { "0:all files valid", "1:errors found", "2:usage error" })
+public class CheckCommand implements Callable<Integer> {
+
+    @Parameters(arity = "1..*", paramLabel = "FILE", description = "Model files to check.")
+    List<File> files;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        Integer usage = Files.checkReadable(files, spec);
+        if (usage != null) {
+            return usage;
+        }
+        ModelLoader loader = new ModelLoader();
+        files.forEach(loader::load);
+        List<Diagnostic> diagnostics = loader.validateAll();
+        PrintWriter out = spec.commandLine().getOut();
+        diagnostics.forEach(out::println);
+        out.flush();
+        boolean errors = diagnostics.stream().anyMatch(d -> d.severity() == Diagnostic.Severity.ERROR);
+        return errors ? 1 : 0;
+    }
+}

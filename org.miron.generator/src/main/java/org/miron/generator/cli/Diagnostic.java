@@ -1,0 +1,33 @@
+package org.miron.generator.cli;
+
+/** One problem in a model file, printed the way compilers do: file:line:col: severity: message. */
+public record Diagnostic(String file, int line, int column, Severity severity, String message)
+        implements Comparable<Diagnostic> {
+
+    public enum Severity {
+        ERROR, WARNING;
+
+        @Override
+        public String toString() {
+            return name().toLowerCase();
+        }
+    }
+
+    @Override
+    public String toString() {
+        return line > 0 ? file + ":" + line + ":" + column + ": " + severity + ": " + message
+                : file + ": " + severity + ": " + message;
+    }
+
+    @Override
+    public int compareTo(Diagnostic other) {
+        int byFile = file.compareTo(other.file);
+        if (byFile != 0) {
+            return byFile;
+        }
+        if (line != other.line) {
+            return Integer.compare(line, other.line);
+        }
+        return column != other.column ? Integer.compare(column, other.column) : message.compareTo(other.message);
+    }
+}

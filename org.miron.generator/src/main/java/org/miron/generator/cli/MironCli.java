@@ -1,0 +1,26 @@
+package org.miron.generator.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The `miron` command: model checking, formatting and generation. */
+@Command(name = "miron", mixinStandardHelpOptions = true, version = "miron 0.1",
+        description = "MIRoN toolchain: behaviour trees, RoQME and MIRoN models for self-adaptive robots.",
+        subcommands = { CheckCommand.class, FormatCommand.class, CommandLine.HelpCommand.class })
+public class MironCli implements Runnable {
+
+    @Override
+    public void run() {
+        // No subcommand: a usage error, as for any other malformed command line.
+        throw new CommandLine.ParameterException(new CommandLine(this), "missing command");
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(args));
+    }
+
+    /** Runs the command line and returns its exit code: 0 ok, 1 model errors, 2 usage. */
+    public static int run(String... args) {
+        return new CommandLine(new MironCli()).execute(args);
+    }
+}
