@@ -4,15 +4,40 @@ import org.eclipse.xtext.conversion.IValueConverterService;
 import org.eclipse.xtext.formatting2.IFormatter2;
 import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
 import org.eclipse.xtext.naming.IQualifiedNameProvider;
+import org.eclipse.xtext.parser.antlr.Lexer;
+import org.eclipse.xtext.parser.antlr.LexerBindings;
+import org.eclipse.xtext.parser.antlr.LexerProvider;
 import org.eclipse.xtext.scoping.IGlobalScopeProvider;
 import org.miron.bt.conversion.BtValueConverterService;
 import org.miron.bt.formatting2.BtFormatter;
 import org.miron.bt.linking.BtLinkingDiagnosticMessageProvider;
 import org.miron.bt.naming.BtQualifiedNameProvider;
+import org.miron.bt.parser.BtLexer;
+import org.miron.bt.parser.antlr.lexer.InternalBtLexer;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
+
+import com.google.inject.Binder;
+import com.google.inject.Provider;
+import com.google.inject.name.Names;
 
 /** Guice bindings of the BT language's runtime services. */
 public class BtRuntimeModule extends AbstractBtRuntimeModule {
+
+    // The hand-written lexer (opaque TreeNodesModel) replaces the generated one everywhere.
+    @Override
+    public Class<? extends Lexer> bindLexer() {
+        return BtLexer.class;
+    }
+
+    @Override
+    public Provider<? extends InternalBtLexer> provideInternalBtLexer() {
+        return LexerProvider.create(BtLexer.class);
+    }
+
+    @Override
+    public void configureRuntimeLexer(Binder binder) {
+        binder.bind(Lexer.class).annotatedWith(Names.named(LexerBindings.RUNTIME)).to(BtLexer.class);
+    }
 
     @Override
     public Class<? extends IValueConverterService> bindIValueConverterService() {

@@ -72,6 +72,19 @@ public final class BtTrees {
         return trees;
     }
 
+    /** True when another file loaded in the same resource set includes this one. */
+    public static boolean isIncludedByAnother(Resource resource) {
+        if (resource.getResourceSet() == null) {
+            return false;
+        }
+        for (Resource other : List.copyOf(resource.getResourceSet().getResources())) {
+            if (other != resource && BtGlobalScopeProvider.includesOf(other).contains(resource.getURI())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Node IDs declared in a TreeNodesModel (its content is opaque, so this reads it leniently). */
     public static Set<String> declaredNodeIds(TreeNodesModel nodesModel) {
         Set<String> ids = new LinkedHashSet<>();

@@ -47,7 +47,8 @@ public class BtValidator extends AbstractBtValidator {
         String main = model.getMain_tree_to_execute();
         Map<String, BehaviorTree> visible = BtTrees.visibleTrees(model.eResource());
         if (main == null) {
-            if (model.getTrees().size() > 1) {
+            // Only the file BehaviorTree.CPP loads first needs it; included files are libraries.
+            if (model.getTrees().size() > 1 && !BtTrees.isIncludedByAnother(model.eResource())) {
                 error("main_tree_to_execute is required when a file holds several trees ("
                         + model.getTrees().size() + " here)", model, null);
             }

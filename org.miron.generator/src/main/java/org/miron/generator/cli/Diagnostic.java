@@ -13,6 +13,11 @@ public record Diagnostic(String file, int line, int column, Severity severity, S
         }
     }
 
+    /** Keeps one diagnostic per line: parser messages may quote text that spans lines. */
+    public Diagnostic {
+        message = message == null ? "" : message.replaceAll("\\s*\\R\\s*", " ");
+    }
+
     @Override
     public String toString() {
         return line > 0 ? file + ":" + line + ":" + column + ": " + severity + ": " + message

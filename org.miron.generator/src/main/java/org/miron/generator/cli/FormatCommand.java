@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.concurrent.Callable;
 
 import org.eclipse.xtext.resource.XtextResource;
+import org.miron.bt.formatting2.BtFormatting;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -35,7 +36,7 @@ public class FormatCommand implements Callable<Integer> {
         XtextResource resource = (XtextResource) loader.load(file);
         if (!resource.getParseResult().getSyntaxErrors().iterator().hasNext()) {
             PrintWriter out = spec.commandLine().getOut();
-            out.print(ModelFormatter.format(resource));
+            out.print(BtFormatting.format(resource));
             out.flush();
             return 0;
         }

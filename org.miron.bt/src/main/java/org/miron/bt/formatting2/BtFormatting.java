@@ -1,4 +1,4 @@
-package org.miron.generator.cli;
+package org.miron.bt.formatting2;
 
 import java.util.List;
 
@@ -11,9 +11,12 @@ import org.eclipse.xtext.formatting2.regionaccess.TextRegionAccessBuilder;
 import org.eclipse.xtext.preferences.MapBasedPreferenceValues;
 import org.eclipse.xtext.resource.XtextResource;
 
-/** Runs a language's Xtext formatter over a whole parsed file and returns the new text. */
-public final class ModelFormatter {
-    private ModelFormatter() {
+/**
+ * Runs the Xtext formatter of a resource's language over the whole parsed file and returns the
+ * new text: two-space indentation, '\n' line ends. Works for any of the MIRoN languages.
+ */
+public final class BtFormatting {
+    private BtFormatting() {
     }
 
     public static String format(XtextResource resource) {
