@@ -21,6 +21,11 @@ public class MironCli implements Runnable {
 
     /** Runs the command line and returns its exit code: 0 ok, 1 model errors, 2 usage. */
     public static int run(String... args) {
-        return new CommandLine(new MironCli()).execute(args);
+        return commandLine().execute(args);
+    }
+
+    /** The command line, for callers that redirect its output (tests, other tools). */
+    public static CommandLine commandLine() {
+        return new CommandLine(new MironCli());
     }
 }
