@@ -1,0 +1,43 @@
+package org.miron.runtime.executor;
+
+import java.io.PrintStream;
+import java.time.Instant;
+import java.time.ZoneId;
+import java.time.format.DateTimeFormatter;
+
+/**
+ * Prints each status change as one line, when it happens:
+ * {@code 08:01:02.345  Main/PickDeliverChargeSubtree/deliver/objectdrop  IDLE -> RUNNING}.
+ */
+public final class ConsoleTracePrinter implements StatusListener {
+    private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
+
+    private final PrintStream out;
+    private final ZoneId zone;
+    private final boolean showResets;
+
+    /** To standard output, local time, resets to IDLE included. */
+    public ConsoleTracePrinter() {
+        this(System.out, ZoneId.systemDefault(), true);
+    }
+
+    /** @param showResets whether to print the X → IDLE lines halts and resets produce */
+    public ConsoleTracePrinter(PrintStream out, ZoneId zone, boolean showResets) {
+        this.out = out;
+        this.zone = zone;
+        this.showResets = showResets;
+    }
+
+    @Override
+    public void statusChanged(long timeMillis, Node node, NodeStatus from, NodeStatus to) {
+        if (to == NodeStatus.IDLE && !showResets) {
+            return;
+        }
+        out.println(format(timeMillis, node, from, to));
+        out.flush();
+    }
+
+    public String format(long timeMillis, Node node, NodeStatus from, NodeStatus to) {
+        return TIME.format(Instant.ofEpochMilli(timeMillis).atZone(zone)) + "  " + node.path() + "  " + from + " -> " + to;
+    }
+}
