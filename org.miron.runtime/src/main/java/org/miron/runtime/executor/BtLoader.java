@@ -9,6 +9,7 @@ import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.resource.IResourceFactory;
 import org.eclipse.xtext.resource.XtextResourceSet;
 import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.validation.CheckMode;
@@ -43,6 +44,10 @@ public final class BtLoader {
             throw new BtBuildException("no such behaviour-tree file: " + absolute);
         }
         XtextResourceSet resourceSet = injector().getInstance(XtextResourceSet.class);
+        // Woven trees are written as .ext.xml: parse them with the BT language too, in this
+        // resource set only (the global registry keeps "xml" for whoever else uses it).
+        resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap()
+                .put("xml", injector().getInstance(IResourceFactory.class));
         Resource resource;
         try {
             resource = resourceSet.getResource(URI.createFileURI(absolute.toString()), true);

@@ -38,7 +38,7 @@ public class SkillActionNode extends Node {
         return finish(done);
     }
 
-    /** Literals as numbers where they read as one; blackboard ports by value, skipped while unset (outputs). */
+    /** Ports by value, numbers where they read as one; pointers still unset are skipped (they are outputs). */
     Map<String, Object> inAttributes() {
         Map<String, Object> in = new LinkedHashMap<>();
         ports().attributes().forEach((port, written) -> {
@@ -46,7 +46,8 @@ public class SkillActionNode extends Node {
                 return;
             }
             if (Ports.blackboardKey(port, written).isPresent()) {
-                ports().get(port).ifPresent(value -> in.put(port, value));
+                // literals a SubTreePlus wrote (x_input="-9.33") are strings: send numbers as numbers
+                ports().get(port).ifPresent(value -> in.put(port, value instanceof String text ? Conversions.toScalar(text) : value));
             } else {
                 in.put(port, Conversions.toScalar(written));
             }
