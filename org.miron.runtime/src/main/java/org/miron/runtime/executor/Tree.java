@@ -119,6 +119,20 @@ public final class Tree {
         }
     }
 
+    /** The tree as an indented outline with each node's status, for people (like BT.CPP's printTreeRecursively). */
+    public String render() {
+        StringBuilder text = new StringBuilder();
+        render(root, 0, text);
+        return text.toString();
+    }
+
+    private static void render(Node node, int depth, StringBuilder into) {
+        into.append("  ".repeat(depth)).append(node.name()).append(" [").append(node.status()).append("]\n");
+        for (Node child : node.children()) {
+            render(child, depth + 1, into);
+        }
+    }
+
     /** The first node (depth first) whose path ends with {@code suffix}, e.g. "deliver/objectdrop". */
     public Optional<Node> find(String suffix) {
         for (Node node : nodes()) {

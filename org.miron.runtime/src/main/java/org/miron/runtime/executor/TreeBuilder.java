@@ -1,5 +1,6 @@
 package org.miron.runtime.executor;
 
+import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
@@ -62,6 +63,11 @@ public final class TreeBuilder {
     public TreeBuilder(ActionRegistry registry, TreeContext context) {
         this.registry = registry;
         this.context = context;
+    }
+
+    /** Loads a .bt or .ext.xml file through the BT language and builds its main tree. */
+    public Tree build(Path file) {
+        return build(new BtLoader().load(file).model());
     }
 
     /** The tree main_tree_to_execute names, or the only tree of the file. */

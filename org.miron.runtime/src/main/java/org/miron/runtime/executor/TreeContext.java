@@ -54,7 +54,12 @@ public final class TreeContext {
         }
         long now = clock.nowMillis();
         for (StatusListener listener : listeners) {
-            listener.statusChanged(now, node, from, to);
+            try {
+                listener.statusChanged(now, node, from, to);
+            } catch (RuntimeException e) {
+                // a broken monitor must not stop the robot's behaviour; say so and carry on
+                System.err.println("status listener " + listener + " failed on " + node.path() + ": " + e);
+            }
         }
     }
 }

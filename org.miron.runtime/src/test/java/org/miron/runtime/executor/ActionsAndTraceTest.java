@@ -186,4 +186,26 @@ public class ActionsAndTraceTest {
                 "01:02:03.045  Seq/Sequence  RUNNING -> FAILURE") + System.lineSeparator(),
                 bytes.toString(StandardCharsets.UTF_8));
     }
+
+    @Test
+    public void aFailingListenerDoesNotStopTheTree() {
+        registry.registerSync("A", ports -> SUCCESS);
+        registry.registerSync("B", ports -> SUCCESS);
+        registry.registerSync("C", ports -> SUCCESS);
+        TreeContext context = new TreeContext();
+        context.addListener((time, node, from, to) -> {
+            throw new IllegalStateException("broken monitor");
+        });
+        assertEquals(SUCCESS, controls("Seq", context).tickRoot());
+    }
+
+    @Test
+    public void renderShowsTheTreeWithStatuses() {
+        registry.registerSync("A", ports -> SUCCESS);
+        ScriptedAction.register(registry, "B").returns(RUNNING);
+        registry.registerSync("C", ports -> SUCCESS);
+        Tree tree = controls("Seq", new TreeContext());
+        tree.tickRoot();
+        assertEquals("Sequence [RUNNING]\n  A [SUCCESS]\n  B [RUNNING]\n  C [IDLE]\n", tree.render());
+    }
 }

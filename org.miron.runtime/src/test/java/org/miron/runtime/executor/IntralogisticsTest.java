@@ -64,7 +64,7 @@ public class IntralogisticsTest {
     private Tree build(String file) {
         TreeContext context = new TreeContext();
         context.addListener(trace);
-        return new TreeBuilder(registry, context).build(Fixtures.load(file));
+        return new TreeBuilder(registry, context).build(Fixtures.resource(file));
     }
 
     @Test
