@@ -5,6 +5,8 @@ import java.util.Objects;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Function;
 import java.util.function.Supplier;
 
 /**
@@ -39,6 +41,12 @@ public final class ActionRegistry {
     public ActionRegistry registerAsync(String id, Supplier<? extends AsyncAction> actions) {
         Objects.requireNonNull(actions);
         return register(id, spec -> new AsyncActionNode(spec.info(), actions.get()));
+    }
+
+    /** A Java action running as a future started on its first tick and cancelled when halted. */
+    public ActionRegistry registerFuture(String id, Function<Ports, CompletableFuture<NodeStatus>> start) {
+        Objects.requireNonNull(start);
+        return registerAsync(id, () -> new FutureAction(start));
     }
 
     /** Registers {@value #VARIANT_ACTION}, reading decisions from {@code variants}. */

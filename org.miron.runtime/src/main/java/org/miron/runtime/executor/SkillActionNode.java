@@ -28,7 +28,13 @@ public class SkillActionNode extends Node {
     @Override
     protected NodeStatus tick() {
         if (status() != NodeStatus.RUNNING || running == null) {
-            running = client.pushSkill(new SkillRequest(skill, inAttributes()));
+            try {
+                running = client.pushSkill(new SkillRequest(skill, inAttributes()));
+            } catch (RuntimeException e) {
+                // the skill interface is unreachable or refused: the action fails, the tree decides
+                lastError = "push-skill " + skill + " failed: " + e;
+                return NodeStatus.FAILURE;
+            }
         }
         if (!running.result().isDone()) {
             return NodeStatus.RUNNING;

@@ -208,4 +208,37 @@ public class ActionsAndTraceTest {
         tree.tickRoot();
         assertEquals("Sequence [RUNNING]\n  A [SUCCESS]\n  B [RUNNING]\n  C [IDLE]\n", tree.render());
     }
+
+    @Test
+    public void futureActionsRunUntilTheirFutureCompletesAndAreCancelledWhenHalted() {
+        java.util.List<java.util.concurrent.CompletableFuture<NodeStatus>> started = new java.util.ArrayList<>();
+        registry.registerFuture("A", ports -> {
+            java.util.concurrent.CompletableFuture<NodeStatus> f = new java.util.concurrent.CompletableFuture<>();
+            started.add(f);
+            return f;
+        });
+        registry.registerSync("B", ports -> SUCCESS);
+        registry.registerSync("C", ports -> SUCCESS);
+        Tree tree = controls("Seq", new TreeContext());
+        assertEquals(RUNNING, tree.tickRoot());
+        assertEquals(RUNNING, tree.tickRoot());
+        started.get(0).complete(SUCCESS);
+        assertEquals(SUCCESS, tree.tickRoot());
+        assertEquals(RUNNING, tree.tickRoot());
+        tree.haltTree();
+        assertTrue(started.get(1).isCancelled());
+        assertEquals(RUNNING, tree.tickRoot());
+        started.get(2).completeExceptionally(new IllegalStateException("motor fault"));
+        assertEquals(FAILURE, tree.tickRoot());
+    }
+
+    @Test
+    public void anUnreachableSkillInterfaceFailsTheActionWithoutStoppingTheTree() {
+        Ports ports = new Ports(java.util.Map.of("ID", "dock"), Blackboard.create());
+        SkillActionNode node = new SkillActionNode(NodeInfo.of("dock", ports, new TreeContext()), "dock", request -> {
+            throw new IllegalStateException("no route to host");
+        });
+        assertEquals(FAILURE, node.executeTick());
+        assertTrue(node.lastError().get(), node.lastError().get().contains("no route to host"));
+    }
 }
