@@ -165,7 +165,7 @@ public final class TreeBuilder {
                 // compact form <X .../>: a tree ID used as a tag is a SubTree, anything else an action ID
                 BehaviorTree tree = trees(node).get(node.getTag());
                 if (tree != null) {
-                    return subtreeByTag(tree, info, blackboard, stack);
+                    return plainSubtree(tree, info, blackboard, stack);
                 }
                 return registry.create(new ActionSpec(node.getTag(), ActionSpec.Kind.ACTION, info));
             }
@@ -250,17 +250,11 @@ public final class TreeBuilder {
 
     /** SubTree: isolated blackboard unless __shared_blackboard; other attributes remap a key to a parent key by name. */
     private Node subtree(Subtree node, NodeInfo info, Blackboard parent, Deque<String> stack) {
-        BehaviorTree tree = target(node, info);
-        boolean shared = booleanAttribute(info, SHARED);
-        Blackboard blackboard = shared ? parent : parent.createChild();
-        if (!shared) {
-            remapByName(info, blackboard);
-        }
-        return new SubTreeNode(info, tree.getName(), blackboard, buildTree(tree, blackboard, info.path(), stack));
+        return plainSubtree(target(node, info), info, parent, stack);
     }
 
-    /** A tree ID written as a tag: a SubTree; a value in braces is taken as the key it names. */
-    private Node subtreeByTag(BehaviorTree tree, NodeInfo info, Blackboard parent, Deque<String> stack) {
+    /** Also a tree ID written as a tag (a SubTree); a value in braces is taken as the key it names. */
+    private Node plainSubtree(BehaviorTree tree, NodeInfo info, Blackboard parent, Deque<String> stack) {
         boolean shared = booleanAttribute(info, SHARED);
         Blackboard blackboard = shared ? parent : parent.createChild();
         if (!shared) {
