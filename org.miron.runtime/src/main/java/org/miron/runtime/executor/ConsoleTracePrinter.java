@@ -8,6 +8,8 @@ import java.time.format.DateTimeFormatter;
 /**
  * Prints each status change as one line, when it happens:
  * {@code 08:01:02.345  Main/PickDeliverChargeSubtree/deliver/objectdrop  IDLE -> RUNNING}.
+ * A halt (RUNNING → IDLE) is always shown and marked; the resets of finished nodes to IDLE, which
+ * follow every completion, can be left out.
  */
 public final class ConsoleTracePrinter implements StatusListener {
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
@@ -16,12 +18,12 @@ public final class ConsoleTracePrinter implements StatusListener {
     private final ZoneId zone;
     private final boolean showResets;
 
-    /** To standard output, local time, resets to IDLE included. */
+    /** To standard output, local time, resets of finished nodes included. */
     public ConsoleTracePrinter() {
         this(System.out, ZoneId.systemDefault(), true);
     }
 
-    /** @param showResets whether to print the X → IDLE lines halts and resets produce */
+    /** @param showResets whether to print the SUCCESS/FAILURE → IDLE lines of finished nodes being reset */
     public ConsoleTracePrinter(PrintStream out, ZoneId zone, boolean showResets) {
         this.out = out;
         this.zone = zone;
@@ -30,7 +32,7 @@ public final class ConsoleTracePrinter implements StatusListener {
 
     @Override
     public void statusChanged(long timeMillis, Node node, NodeStatus from, NodeStatus to) {
-        if (to == NodeStatus.IDLE && !showResets) {
+        if (to == NodeStatus.IDLE && from.isCompleted() && !showResets) {
             return;
         }
         out.println(format(timeMillis, node, from, to));
@@ -38,6 +40,7 @@ public final class ConsoleTracePrinter implements StatusListener {
     }
 
     public String format(long timeMillis, Node node, NodeStatus from, NodeStatus to) {
-        return TIME.format(Instant.ofEpochMilli(timeMillis).atZone(zone)) + "  " + node.path() + "  " + from + " -> " + to;
+        return TIME.format(Instant.ofEpochMilli(timeMillis).atZone(zone)) + "  " + node.path() + "  " + from + " -> " + to
+                + (from == NodeStatus.RUNNING && to == NodeStatus.IDLE ? "  (halted)" : "");
     }
 }

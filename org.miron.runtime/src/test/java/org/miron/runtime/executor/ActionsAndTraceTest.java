@@ -241,4 +241,24 @@ public class ActionsAndTraceTest {
         assertEquals(FAILURE, node.executeTick());
         assertTrue(node.lastError().get(), node.lastError().get().contains("no route to host"));
     }
+
+    @Test
+    public void consoleTraceAlwaysShowsHalts() {
+        registry.registerSync("A", ports -> SUCCESS);
+        ScriptedAction.register(registry, "B").returns(RUNNING);
+        registry.registerSync("C", ports -> SUCCESS);
+        FakeClock clock = new FakeClock();
+        clock.now = 0;
+        TreeContext context = new TreeContext(clock);
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        context.addListener(new ConsoleTracePrinter(new PrintStream(bytes, true, StandardCharsets.UTF_8), ZoneOffset.UTC, false));
+        Tree tree = controls("Seq", context);
+        tree.tickRoot();
+        bytes.reset();
+        tree.haltTree();
+        assertEquals(String.join(System.lineSeparator(),
+                "00:00:00.000  Seq/Sequence/B  RUNNING -> IDLE  (halted)",
+                "00:00:00.000  Seq/Sequence  RUNNING -> IDLE  (halted)") + System.lineSeparator(),
+                bytes.toString(StandardCharsets.UTF_8));
+    }
 }
