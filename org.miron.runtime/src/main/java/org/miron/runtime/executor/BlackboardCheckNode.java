@@ -1,0 +1,56 @@
+package org.miron.runtime.executor;
+
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * BlackboardCheckInt/Double/String(value_A, value_B, return_on_mismatch=FAILURE): when both values
+ * can be read as the type and are equal, ticks the child and returns its status; otherwise halts a
+ * running child and returns return_on_mismatch.
+ */
+public class BlackboardCheckNode extends DecoratorNode {
+
+    /** How the two values are read and compared. */
+    public enum Kind {
+        INT, DOUBLE, STRING
+    }
+
+    private final Kind kind;
+
+    public BlackboardCheckNode(NodeInfo info, Kind kind, Node child) {
+        super(info, child);
+        this.kind = kind;
+    }
+
+    @Override
+    protected NodeStatus tick() {
+        setStatus(NodeStatus.RUNNING);
+        Optional<Object> a = read("value_A");
+        Optional<Object> b = read("value_B");
+        if (a.isPresent() && b.isPresent() && Objects.equals(a.get(), b.get())) {
+            return child.executeTick();
+        }
+        resetChild();
+        return ports().get("return_on_mismatch").map(Conversions::toStatus).orElse(NodeStatus.FAILURE);
+    }
+
+    /** The value as the check's type, or empty when missing or not convertible (a mismatch). */
+    private Optional<Object> read(String port) {
+        Optional<Object> value = ports().get(port);
+        if (value.isEmpty()) {
+            return value;
+        }
+        try {
+            switch (kind) {
+                case INT:
+                    return Optional.of(Conversions.toInt(value.get()));
+                case DOUBLE:
+                    return Optional.of(Conversions.toDouble(value.get()));
+                default:
+                    return Optional.of(Conversions.toStringValue(value.get()));
+            }
+        } catch (IllegalArgumentException | ArithmeticException notConvertible) {
+            return Optional.empty();
+        }
+    }
+}

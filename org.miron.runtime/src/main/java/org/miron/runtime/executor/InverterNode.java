@@ -1,0 +1,25 @@
+package org.miron.runtime.executor;
+
+/** Inverter: swaps SUCCESS and FAILURE; RUNNING passes through. */
+public class InverterNode extends DecoratorNode {
+
+    public InverterNode(NodeInfo info, Node child) {
+        super(info, child);
+    }
+
+    @Override
+    protected NodeStatus tick() {
+        setStatus(NodeStatus.RUNNING);
+        NodeStatus childStatus = child.executeTick();
+        switch (childStatus) {
+            case SUCCESS:
+                resetChild();
+                return NodeStatus.FAILURE;
+            case FAILURE:
+                resetChild();
+                return NodeStatus.SUCCESS;
+            default:
+                return childStatus;
+        }
+    }
+}

@@ -1,0 +1,399 @@
+package org.miron.runtime.executor;
+
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.eclipse.emf.common.util.TreeIterator;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.miron.bt.bt.Action;
+import org.miron.bt.bt.AlwaysFailure;
+import org.miron.bt.bt.AlwaysSuccess;
+import org.miron.bt.bt.Attribute;
+import org.miron.bt.bt.BTModel;
+import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.bt.BlackboardCheckDouble;
+import org.miron.bt.bt.BlackboardCheckInt;
+import org.miron.bt.bt.BlackboardCheckString;
+import org.miron.bt.bt.Condition;
+import org.miron.bt.bt.ControlNode;
+import org.miron.bt.bt.DecoratorNode;
+import org.miron.bt.bt.Fallback;
+import org.miron.bt.bt.FallbackStar;
+import org.miron.bt.bt.ForceFailure;
+import org.miron.bt.bt.ForceSuccess;
+import org.miron.bt.bt.Inverter;
+import org.miron.bt.bt.Parallel;
+import org.miron.bt.bt.Repeat;
+import org.miron.bt.bt.RetryUntilSuccess;
+import org.miron.bt.bt.Sequence;
+import org.miron.bt.bt.SequenceStar;
+import org.miron.bt.bt.SetBlackboard;
+import org.miron.bt.bt.Subtree;
+import org.miron.bt.bt.SubtreeNode;
+import org.miron.bt.bt.SubtreePlus;
+import org.miron.bt.bt.Switch;
+import org.miron.bt.bt.Timeout;
+import org.miron.bt.bt.TreeNode;
+import org.miron.bt.util.BtAttributes;
+import org.miron.bt.util.BtTrees;
+
+/**
+ * Turns a BT model (EMF, from the BT language) into a runnable {@link Tree}: one runtime node per
+ * model node, subtrees expanded with their own blackboards, actions resolved by the registry.
+ * Structural problems (missing or bad literal parameters, wrong child counts, unknown trees or
+ * actions, recursive subtrees) are reported here, before anything runs.
+ */
+public final class TreeBuilder {
+    private static final String SHARED = "__shared_blackboard";
+    private static final String AUTOREMAP = "__autoremap";
+
+    private final ActionRegistry registry;
+    private final TreeContext context;
+    private final Map<Resource, Map<String, BehaviorTree>> visibleTrees = new HashMap<>();
+
+    public TreeBuilder(ActionRegistry registry, TreeContext context) {
+        this.registry = registry;
+        this.context = context;
+    }
+
+    /** Loads a .bt or .ext.xml file through the BT language and builds its main tree. */
+    public Tree build(Path file) {
+        return build(new BtLoader().load(file).model());
+    }
+
+    /** The tree main_tree_to_execute names, or the only tree of the file. */
+    public Tree build(BTModel model) {
+        String main = BtAttributes.value(model.getAttributes(), "main_tree_to_execute");
+        if (main != null) {
+            return build(model, main);
+        }
+        if (model.getTrees().size() == 1) {
+            return build(model.getTrees().get(0));
+        }
+        throw new BtBuildException("the file holds " + model.getTrees().size()
+                + " trees and no main_tree_to_execute saying which one to run");
+    }
+
+    /** The tree with this ID, in the file or in a file it includes. */
+    public Tree build(BTModel model, String treeId) {
+        BehaviorTree tree = trees(model).get(treeId);
+        if (tree == null) {
+            throw new BtBuildException("no tree with ID '" + treeId + "' (known: " + trees(model).keySet() + ")");
+        }
+        return build(tree);
+    }
+
+    public Tree build(BehaviorTree tree) {
+        Blackboard blackboard = Blackboard.create();
+        Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
+        return new Tree(tree.getName(), root, blackboard, context);
+    }
+
+    private Map<String, BehaviorTree> trees(EObject object) {
+        Resource resource = object.eResource();
+        if (resource == null) {
+            Map<String, BehaviorTree> local = new LinkedHashMap<>();
+            EObject top = org.eclipse.emf.ecore.util.EcoreUtil.getRootContainer(object);
+            if (top instanceof BTModel model) {
+                model.getTrees().forEach(t -> local.putIfAbsent(t.getName(), t));
+            }
+            return local;
+        }
+        return visibleTrees.computeIfAbsent(resource, BtTrees::visibleTrees);
+    }
+
+    private Node buildTree(BehaviorTree tree, Blackboard blackboard, String parentPath, Deque<String> stack) {
+        String where = parentPath.isEmpty() ? tree.getName() : parentPath;
+        if (stack.contains(tree.getName())) {
+            throw new BtBuildException(where + ": tree '" + tree.getName() + "' includes itself through " + String.join(" -> ", stack));
+        }
+        if (tree.getNodes().size() != 1) {
+            throw new BtBuildException(where + ": tree '" + tree.getName() + "' must have exactly one root node, has " + tree.getNodes().size());
+        }
+        stack.addLast(tree.getName());
+        Node root = buildNode(tree.getNodes().get(0), blackboard, parentPath.isEmpty() ? tree.getName() : parentPath, stack);
+        stack.removeLast();
+        return root;
+    }
+
+    private Node buildNode(TreeNode node, Blackboard blackboard, String parentPath, Deque<String> stack) {
+        String name = displayName(node);
+        String path = parentPath + "/" + name;
+        NodeInfo info = new NodeInfo(name, path, new Ports(path, attributes(node), blackboard), context);
+        if (node instanceof ControlNode control) {
+            return control(control, info, childrenOf(control, blackboard, path, stack));
+        }
+        if (node instanceof DecoratorNode decorator) {
+            if (!decorator.getSurplus().isEmpty()) {
+                throw new BtBuildException(path + ": a decorator has exactly one child, " + node.getTag() + " has "
+                        + (1 + decorator.getSurplus().size()));
+            }
+            if (decorator.getNode() == null) {
+                throw new BtBuildException(path + ": " + node.getTag() + " has no child");
+            }
+            return decorator(decorator, info, buildNode(decorator.getNode(), blackboard, path, stack));
+        }
+        if (node instanceof Subtree subtree) {
+            return subtree(subtree, info, blackboard, stack);
+        }
+        if (node instanceof SubtreePlus subtreePlus) {
+            return subtreePlus(subtreePlus, info, blackboard, stack);
+        }
+        if (node instanceof AlwaysSuccess) {
+            return new AlwaysSuccessNode(info);
+        }
+        if (node instanceof AlwaysFailure) {
+            return new AlwaysFailureNode(info);
+        }
+        if (node instanceof SetBlackboard) {
+            return new SetBlackboardNode(info);
+        }
+        if (node instanceof Condition) {
+            return registry.create(new ActionSpec(requireId(node, info), ActionSpec.Kind.CONDITION, info));
+        }
+        if (node instanceof Action) {
+            if (!"Action".equals(node.getTag())) {
+                // compact form <X .../>: a tree ID used as a tag is a SubTree, anything else an action ID
+                BehaviorTree tree = trees(node).get(node.getTag());
+                if (tree != null) {
+                    return plainSubtree(tree, info, blackboard, stack);
+                }
+                return registry.create(new ActionSpec(node.getTag(), ActionSpec.Kind.ACTION, info));
+            }
+            return registry.create(new ActionSpec(requireId(node, info), ActionSpec.Kind.ACTION, info));
+        }
+        throw new BtBuildException(path + ": unsupported node " + node.getTag());
+    }
+
+    private List<Node> childrenOf(ControlNode control, Blackboard blackboard, String path, Deque<String> stack) {
+        List<Node> children = new ArrayList<>();
+        for (TreeNode child : control.getNodes()) {
+            children.add(buildNode(child, blackboard, path, stack));
+        }
+        return children;
+    }
+
+    private Node control(ControlNode control, NodeInfo info, List<Node> children) {
+        String tag = control.getTag();
+        if (control instanceof Sequence) {
+            return "ReactiveSequence".equals(tag) ? new ReactiveSequenceNode(info, children) : new SequenceNode(info, children);
+        }
+        if (control instanceof Fallback) {
+            return "ReactiveFallback".equals(tag) ? new ReactiveFallbackNode(info, children) : new FallbackNode(info, children);
+        }
+        if (control instanceof SequenceStar) {
+            return new SequenceStarNode(info, children);
+        }
+        if (control instanceof FallbackStar) {
+            return new FallbackStarNode(info, children);
+        }
+        if (control instanceof Parallel) {
+            checkThreshold(info, ParallelNode.SUCCESS_THRESHOLD, true, children.size());
+            checkThreshold(info, ParallelNode.FAILURE_THRESHOLD, false, children.size());
+            return new ParallelNode(info, children);
+        }
+        if (control instanceof Switch) {
+            int cases;
+            try {
+                cases = Integer.parseInt(tag.substring("Switch".length()));
+            } catch (RuntimeException e) {
+                throw new BtBuildException(info.path() + ": unknown switch " + tag);
+            }
+            return new SwitchNode(info, cases, children);
+        }
+        throw new BtBuildException(info.path() + ": unsupported control node " + tag);
+    }
+
+    private Node decorator(DecoratorNode decorator, NodeInfo info, Node child) {
+        if (decorator instanceof Inverter) {
+            return new InverterNode(info, child);
+        }
+        if (decorator instanceof ForceSuccess) {
+            return new ForceSuccessNode(info, child);
+        }
+        if (decorator instanceof ForceFailure) {
+            return new ForceFailureNode(info, child);
+        }
+        if (decorator instanceof Repeat) {
+            checkIntPort(info, RepeatNode.NUM_CYCLES);
+            return new RepeatNode(info, child);
+        }
+        if (decorator instanceof RetryUntilSuccess) {
+            // both spellings, RetryUntilSuccesful (BT.CPP 3.5-3.6) and RetryUntilSuccessful
+            checkIntPort(info, RetryNode.NUM_ATTEMPTS);
+            return new RetryNode(info, child);
+        }
+        if (decorator instanceof Timeout) {
+            checkIntPort(info, TimeoutNode.MSEC);
+            return new TimeoutNode(info, child);
+        }
+        if (decorator instanceof BlackboardCheckInt) {
+            return new BlackboardCheckNode(info, BlackboardCheckNode.Kind.INT, child);
+        }
+        if (decorator instanceof BlackboardCheckDouble) {
+            return new BlackboardCheckNode(info, BlackboardCheckNode.Kind.DOUBLE, child);
+        }
+        if (decorator instanceof BlackboardCheckString) {
+            return new BlackboardCheckNode(info, BlackboardCheckNode.Kind.STRING, child);
+        }
+        throw new BtBuildException(info.path() + ": unsupported decorator " + decorator.getTag());
+    }
+
+    /** SubTree: isolated blackboard unless __shared_blackboard; other attributes remap a key to a parent key by name. */
+    private Node subtree(Subtree node, NodeInfo info, Blackboard parent, Deque<String> stack) {
+        return plainSubtree(target(node, info), info, parent, stack);
+    }
+
+    /** Also a tree ID written as a tag (a SubTree); a value in braces is taken as the key it names. */
+    private Node plainSubtree(BehaviorTree tree, NodeInfo info, Blackboard parent, Deque<String> stack) {
+        boolean shared = booleanAttribute(info, SHARED);
+        Blackboard blackboard = shared ? parent : parent.createChild();
+        if (!shared) {
+            remapByName(info, blackboard);
+        }
+        return new SubTreeNode(info, tree.getName(), blackboard, buildTree(tree, blackboard, info.path(), stack));
+    }
+
+    private static void remapByName(NodeInfo info, Blackboard blackboard) {
+        info.ports().attributes().forEach((port, value) -> {
+            if (!port.equals("name") && !port.equals(SHARED)) {
+                blackboard.remap(port, Ports.blackboardKey(port, value).orElse(value));
+            }
+        });
+    }
+
+    /**
+     * SubTreePlus: always its own blackboard; {@code port="{parentKey}"} remaps, a literal is written
+     * into the subtree's blackboard, {@code __autoremap="true"} remaps every other key the subtree's
+     * nodes use to the parent key of the same name (BT.CPP 3 ignores __shared_blackboard here).
+     */
+    private Node subtreePlus(SubtreePlus node, NodeInfo info, Blackboard parent, Deque<String> stack) {
+        BehaviorTree tree = target(node, info);
+        Blackboard blackboard = parent.createChild();
+        Set<String> mapped = new LinkedHashSet<>();
+        info.ports().attributes().forEach((port, value) -> {
+            if (port.equals("name") || port.equals(SHARED) || port.equals(AUTOREMAP)) {
+                return;
+            }
+            var key = Ports.blackboardKey(port, value);
+            if (key.isPresent()) {
+                blackboard.remap(port, key.get());
+            } else {
+                blackboard.set(port, value);
+            }
+            mapped.add(port);
+        });
+        if (booleanAttribute(info, AUTOREMAP)) {
+            for (String key : keysUsedIn(tree)) {
+                if (!mapped.contains(key)) {
+                    blackboard.remap(key, key);
+                }
+            }
+        }
+        return new SubTreeNode(info, tree.getName(), blackboard, buildTree(tree, blackboard, info.path(), stack));
+    }
+
+    /** The blackboard keys a tree's own nodes point at (as BT.CPP's getPortsRecursively). */
+    private static Set<String> keysUsedIn(BehaviorTree tree) {
+        Set<String> keys = new LinkedHashSet<>();
+        for (TreeIterator<EObject> it = tree.eAllContents(); it.hasNext();) {
+            if (it.next() instanceof Attribute attribute) {
+                Ports.blackboardKey(attribute.getName(), attribute.getValue()).ifPresent(keys::add);
+            }
+        }
+        return keys;
+    }
+
+    private static BehaviorTree target(SubtreeNode node, NodeInfo info) {
+        BehaviorTree tree = node.getBehaviorTree();
+        if (tree == null || tree.eIsProxy() || tree.getName() == null) {
+            throw new BtBuildException(info.path() + ": " + node.getTag() + " refers to an unknown tree");
+        }
+        return tree;
+    }
+
+    private static boolean booleanAttribute(NodeInfo info, String name) {
+        String value = info.ports().raw(name);
+        if (value == null) {
+            return false;
+        }
+        try {
+            return Conversions.toBoolean(value);
+        } catch (IllegalArgumentException e) {
+            throw new BtBuildException(info.path() + ": " + name + ": " + e.getMessage());
+        }
+    }
+
+    private static String requireId(TreeNode node, NodeInfo info) {
+        String id = node.attribute("ID");
+        if (id == null || id.isBlank()) {
+            throw new BtBuildException(info.path() + ": " + node.getTag() + " needs an ID attribute");
+        }
+        return id;
+    }
+
+    /** A required integer parameter: present, and an integer when written as a literal. */
+    private static void checkIntPort(NodeInfo info, String port) {
+        String value = info.ports().raw(port);
+        if (value == null) {
+            throw new BtBuildException(info.path() + ": missing parameter " + port);
+        }
+        if (Ports.blackboardKey(port, value).isEmpty()) {
+            try {
+                Conversions.toInt(value);
+            } catch (IllegalArgumentException e) {
+                throw new BtBuildException(info.path() + ": " + port + ": " + e.getMessage());
+            }
+        }
+    }
+
+    private static void checkThreshold(NodeInfo info, String port, boolean required, int children) {
+        String value = info.ports().raw(port);
+        if (value == null) {
+            if (required) {
+                throw new BtBuildException(info.path() + ": missing parameter " + port);
+            }
+            return;
+        }
+        checkIntPort(info, port);
+        if (Ports.blackboardKey(port, value).isEmpty()) {
+            try {
+                ParallelNode.resolveThreshold(port, Conversions.toInt(value), children);
+            } catch (BtRuntimeException e) {
+                throw new BtBuildException(info.path() + ": " + e.getMessage());
+            }
+        }
+    }
+
+    private static Map<String, String> attributes(TreeNode node) {
+        Map<String, String> attributes = new LinkedHashMap<>();
+        for (Attribute attribute : node.getAttributes()) {
+            attributes.putIfAbsent(attribute.getName(), attribute.getValue() == null ? "" : attribute.getValue());
+        }
+        return attributes;
+    }
+
+    /** The name attribute, else what identifies the node: the action ID, the tree ID, the tag. */
+    private static String displayName(TreeNode node) {
+        String name = node.attribute("name");
+        if (name != null && !name.isBlank()) {
+            return name;
+        }
+        if (node instanceof SubtreeNode subtree && subtree.getBehaviorTree() != null && subtree.getBehaviorTree().getName() != null) {
+            return subtree.getBehaviorTree().getName();
+        }
+        if ((node instanceof Action || node instanceof Condition) && node.attribute("ID") != null) {
+            return node.attribute("ID");
+        }
+        return node.getTag();
+    }
+}

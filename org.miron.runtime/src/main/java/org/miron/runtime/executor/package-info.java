@@ -1,0 +1,46 @@
+/**
+ * The behaviour-tree executor: runs a .bt file (or a woven .ext.xml) with BehaviorTree.CPP 3
+ * semantics (the project's BT semantics reference: statuses, halting, every node of the BT language).
+ *
+ * <h2>Using it</h2>
+ * <pre>{@code
+ * ActionRegistry actions = new ActionRegistry()
+ *         .registerSync("objectdrop", ports -> NodeStatus.SUCCESS)
+ *         .registerAsync("navigate", NavigateAction::new)      // RUNNING until done, told when halted
+ *         .registerVariantAction(variants)                      // <Action ID="VariantAction" .../>
+ *         .setFallback(new SkillActionStrategy(skillClient));   // every other ID: push-skill requests
+ * TreeContext context = new TreeContext();
+ * context.addListener(new ConsoleTracePrinter());                // status changes as they happen
+ * Tree tree = new TreeBuilder(actions, context).build(Path.of("intralogistics.ext.xml"));
+ * tree.feedBlackboardFrom(numbers);                              // miron.blackboard.<vp> values
+ * tree.tickWhileRunning(Duration.ofMillis(100));
+ * }</pre>
+ * {@link org.miron.runtime.executor.VariantSource} is the thread-safe hand-over point for the bus:
+ * a subscriber publishes {@code miron.variant.<vp>} values into one, {@code miron.blackboard.<vp>}
+ * values into another; {@link org.miron.runtime.executor.SkillClient} is where a ZeroMQ client of
+ * the SmartSoft skill interface plugs in.
+ *
+ * <h2>Design</h2>
+ * {@link org.miron.runtime.executor.TreeBuilder} turns the EMF model into one runtime
+ * {@link org.miron.runtime.executor.Node} per model node (one small class per node kind);
+ * subtrees are expanded in place, each with its own {@link org.miron.runtime.executor.Blackboard}
+ * remapped to its parent's. Ports are read at tick time through
+ * {@link org.miron.runtime.executor.Ports}. Ticks run on one thread; listeners are called on it.
+ *
+ * <h2>Where we differ from BehaviorTree.CPP 3, on purpose</h2>
+ * <ul>
+ * <li>Repeat and RetryUntilSuccessful tick their child at most
+ * {@link org.miron.runtime.executor.TreeContext#maxLoopsPerTick()} times within one tick, then
+ * return RUNNING and carry on at the next tick: Repeat(-1) over a child that always succeeds at
+ * once no longer hangs the tree.</li>
+ * <li>Timeout reads the clock when it is ticked (no timer thread): it fails on the first tick at
+ * which msec have passed since its first tick, which makes it deterministic and testable.</li>
+ * <li>FallbackStar (no longer in BT.CPP 3) mirrors SequenceStar: after a SUCCESS it keeps its
+ * position.</li>
+ * <li>A tree ID used as a tag is a SubTree (BT.CPP 4 style); a value in braces names the parent key.</li>
+ * <li>A Parallel threshold outside 1..children (after counting negative values from the number
+ * of children) is an error: at build time when literal, at tick time when read from the blackboard.</li>
+ * <li>Numeric ports reject fractions ("3.5" is not an int), where BT.CPP would truncate.</li>
+ * </ul>
+ */
+package org.miron.runtime.executor;
