@@ -7,7 +7,6 @@ import static org.miron.runtime.executor.NodeStatus.RUNNING;
 import static org.miron.runtime.executor.NodeStatus.SUCCESS;
 
 import org.junit.Before;
-import org.junit.Ignore;
 import org.junit.Test;
 import org.miron.bt.bt.Action;
 import org.miron.bt.bt.Attribute;
@@ -57,7 +56,6 @@ public class DecoratorNodesTest {
         return attribute;
     }
 
-    @Ignore("org.miron.bt lexes \"<Timeout\" as the start of \"<TreeNodesModel\" (mismatched character 'i' expecting 'r')")
     @Test
     public void timeoutFileLoads() {
         Tree tree = Fixtures.build("timeout.bt", "Timeout100", registry, new TreeContext(clock, 5));
