@@ -1,0 +1,28 @@
+package org.miron.dsl;
+
+import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
+import org.eclipse.xtext.naming.IQualifiedNameConverter;
+import org.eclipse.xtext.naming.IQualifiedNameProvider;
+import org.miron.dsl.linking.DslLinkingDiagnosticMessageProvider;
+import org.miron.dsl.naming.DslQualifiedNameConverter;
+import org.miron.dsl.naming.DslQualifiedNameProvider;
+
+/**
+ * Guice bindings of the MIRoN language. The generated module does not extend RoQME's, so the
+ * naming and linking services shared with RoQME are bound here again.
+ */
+public class MironRuntimeModule extends AbstractMironRuntimeModule {
+
+    @Override
+    public Class<? extends IQualifiedNameProvider> bindIQualifiedNameProvider() {
+        return DslQualifiedNameProvider.class;
+    }
+
+    public Class<? extends IQualifiedNameConverter> bindIQualifiedNameConverter() {
+        return DslQualifiedNameConverter.class;
+    }
+
+    public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {
+        return DslLinkingDiagnosticMessageProvider.class;
+    }
+}

@@ -1,0 +1,107 @@
+package org.miron.dsl.tests;
+
+import static org.junit.Assert.assertTrue;
+import static org.junit.Assert.fail;
+
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.Iterator;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.validation.Issue;
+import org.junit.Test;
+import org.junit.runner.RunWith;
+import org.junit.runners.Parameterized;
+import org.junit.runners.Parameterized.Parameters;
+
+/**
+ * Every model under src/test/resources/models/{roqme,miron}/{valid,invalid}. A valid model has no
+ * error and no unresolved reference. An invalid model marks each expected error on its line with a
+ * comment "//! part of the message"; the errors found must be exactly those, on those lines.
+ * Files under models/lib are only imported by the others.
+ */
+@RunWith(Parameterized.class)
+public class ModelFilesTest {
+
+    private static final Pattern MARKER = Pattern.compile("//!\\s*(.+?)\\s*$");
+
+    @Parameters(name = "{0}")
+    public static Collection<Object[]> files() throws IOException {
+        File base = new File("src/test/resources/models");
+        try (Stream<java.nio.file.Path> paths = Files.walk(base.toPath())) {
+            return paths.map(java.nio.file.Path::toFile)
+                    .filter(f -> f.getName().endsWith(".roqme") || f.getName().endsWith(".miron"))
+                    .filter(f -> !f.getPath().contains(File.separator + "lib" + File.separator))
+                    .sorted()
+                    .map(f -> new Object[] { base.toPath().relativize(f.toPath()).toString(), f })
+                    .collect(Collectors.toList());
+        }
+    }
+
+    private final File file;
+
+    public ModelFilesTest(String name, File file) {
+        this.file = file;
+    }
+
+    @Test
+    public void check() throws IOException {
+        Resource resource = Models.load(file);
+        List<Issue> errors = Models.validateAll(resource).stream()
+                .filter(i -> i.getSeverity() == Severity.ERROR).collect(Collectors.toList());
+        boolean valid = file.getParentFile().getName().equals("valid");
+        if (valid) {
+            if (!errors.isEmpty()) {
+                fail("unexpected errors:\n" + errors.stream().map(Models::format).collect(Collectors.joining("\n")));
+            }
+            List<String> unresolved = Models.unresolved(resource);
+            assertTrue("unresolved references: " + unresolved, unresolved.isEmpty());
+            return;
+        }
+        List<String> problems = new ArrayList<>();
+        List<Issue> remaining = errors.stream()
+                .filter(i -> i.getUriToProblem().trimFragment().lastSegment().equals(file.getName()))
+                .collect(Collectors.toList());
+        List<String> lines = Files.readAllLines(file.toPath(), StandardCharsets.UTF_8);
+        int markers = 0;
+        for (int n = 0; n < lines.size(); n++) {
+            Matcher m = MARKER.matcher(lines.get(n));
+            if (!m.find()) {
+                continue;
+            }
+            markers++;
+            String expected = m.group(1);
+            int line = n + 1;
+            Issue match = null;
+            for (Iterator<Issue> it = remaining.iterator(); it.hasNext();) {
+                Issue issue = it.next();
+                if (issue.getLineNumber() == line && issue.getMessage().contains(expected)) {
+                    match = issue;
+                    it.remove();
+                    break;
+                }
+            }
+            if (match == null) {
+                problems.add("line " + line + ": expected an error containing '" + expected + "'");
+            }
+        }
+        for (Issue issue : remaining) {
+            problems.add("unexpected " + Models.format(issue));
+        }
+        assertTrue(file + " has no //! marker", markers > 0);
+        if (!problems.isEmpty()) {
+            fail(String.join("\n", problems) + "\nall errors:\n"
+                    + errors.stream().map(Models::format).collect(Collectors.joining("\n")));
+        }
+    }
+}
