@@ -62,14 +62,12 @@ final class BusProxy implements Runnable {
             poller.register(xsub, ZMQ.Poller.POLLIN);
             poller.register(xpub, ZMQ.Poller.POLLIN);
             while (running && !Thread.currentThread().isInterrupted()) {
-                if (poller.poll(100) <= 0) {
-                    continue;
-                }
-                if (poller.pollin(0)) {
-                    forward();
-                }
-                if (poller.pollin(1)) {
-                    subscription();
+                poller.poll(50);
+                // Drain both sockets whatever the poller says: JeroMQ's poller can miss an edge
+                // (a subscription then waits for the next event), non-blocking reads cannot.
+                boolean busy = true;
+                while (busy && running) {
+                    busy = forward() | subscription();
                 }
             }
         } catch (RuntimeException e) {
@@ -79,10 +77,10 @@ final class BusProxy implements Runnable {
         }
     }
 
-    private void forward() {
+    private boolean forward() {
         ZMsg msg = ZMsg.recvMsg(xsub, false);
         if (msg == null) {
-            return;
+            return false;
         }
         List<byte[]> frames = new ArrayList<>();
         for (ZFrame f : msg) {
@@ -90,17 +88,22 @@ final class BusProxy implements Runnable {
         }
         cache.put(frames);
         send(xpub, frames);
+        return true;
     }
 
-    private void subscription() {
+    private boolean subscription() {
         byte[] data = xpub.recv(ZMQ.DONTWAIT);
-        if (data == null || data.length == 0 || data[0] != 1) {
-            return; // unsubscribe or garbage: nothing to replay
+        if (data == null) {
+            return false;
+        }
+        if (data.length == 0 || data[0] != 1) {
+            return true; // unsubscribe or garbage: nothing to replay
         }
         byte[] prefix = Arrays.copyOfRange(data, 1, data.length);
         for (List<byte[]> frames : cache.matching(prefix)) {
             send(xpub, frames);
         }
+        return true;
     }
 
     private static void send(ZMQ.Socket socket, List<byte[]> frames) {

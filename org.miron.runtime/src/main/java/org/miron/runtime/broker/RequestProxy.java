@@ -1,6 +1,7 @@
 package org.miron.runtime.broker;
 
 import java.util.logging.Logger;
+import org.miron.runtime.Connect;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -33,7 +34,7 @@ final class RequestProxy implements Runnable {
         frontend.setLinger(0);
         backend.setLinger(0);
         frontend.bind(frontendEndpoint);
-        backend.connect(backendEndpoint);
+        Connect.connect(backend, backendEndpoint);
     }
 
     void stop() {
@@ -46,14 +47,11 @@ final class RequestProxy implements Runnable {
             poller.register(frontend, ZMQ.Poller.POLLIN);
             poller.register(backend, ZMQ.Poller.POLLIN);
             while (running && !Thread.currentThread().isInterrupted()) {
-                if (poller.poll(100) <= 0) {
-                    continue;
-                }
-                if (poller.pollin(0)) {
-                    relay(frontend, backend);
-                }
-                if (poller.pollin(1)) {
-                    relay(backend, frontend);
+                poller.poll(50);
+                // Drain regardless of the poller's flags: JeroMQ's poller can miss an edge.
+                boolean busy = true;
+                while (busy && running) {
+                    busy = relay(frontend, backend) | relay(backend, frontend);
                 }
             }
         } catch (RuntimeException e) {
@@ -63,10 +61,12 @@ final class RequestProxy implements Runnable {
         }
     }
 
-    private static void relay(ZMQ.Socket from, ZMQ.Socket to) {
+    private static boolean relay(ZMQ.Socket from, ZMQ.Socket to) {
         ZMsg msg = ZMsg.recvMsg(from, false);
-        if (msg != null) {
-            msg.send(to);
+        if (msg == null) {
+            return false;
         }
+        msg.send(to);
+        return true;
     }
 }

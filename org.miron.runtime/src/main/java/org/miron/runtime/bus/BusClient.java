@@ -8,6 +8,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
+import org.miron.runtime.Connect;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -94,12 +95,12 @@ public final class BusClient implements AutoCloseable {
     private void loop() {
         ZMQ.Socket out = ctx.createSocket(SocketType.XPUB);
         out.setLinger(1000); // let queued output leave on close (the player's last events)
-        out.connect(publishEndpoint);
+        Connect.connect(out, publishEndpoint);
         ZMQ.Socket in = null;
         if (subscribeEndpoint != null && !subscriptions.isEmpty()) {
             in = ctx.createSocket(SocketType.SUB);
             in.setLinger(0);
-            in.connect(subscribeEndpoint);
+            Connect.connect(in, subscribeEndpoint);
             for (String s : subscriptions) {
                 in.subscribe(s.getBytes(StandardCharsets.UTF_8));
             }
@@ -111,13 +112,14 @@ public final class BusClient implements AutoCloseable {
             }
             while (running) {
                 poller.poll(10);
-                if (poller.pollin(0)) {
-                    byte[] sub = out.recv(ZMQ.DONTWAIT);
-                    if (sub != null && sub.length > 0 && sub[0] == 1) {
+                // Read without trusting the poller's flags: JeroMQ's poller can miss an edge.
+                byte[] sub;
+                while ((sub = out.recv(ZMQ.DONTWAIT)) != null) {
+                    if (sub.length > 0 && sub[0] == 1) {
                         ready.countDown();
                     }
                 }
-                if (in != null && poller.pollin(1)) {
+                if (in != null) {
                     receive(in);
                 }
                 if (ready.getCount() == 0) {

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.logging.Logger;
+import org.miron.runtime.Connect;
 import org.miron.runtime.Json;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
@@ -147,7 +148,7 @@ public final class ParameterSender implements AutoCloseable {
     private ZMQ.Socket connect() {
         ZMQ.Socket s = ctx.createSocket(SocketType.DEALER);
         s.setLinger(0);
-        s.connect(endpoint);
+        Connect.connect(s, endpoint);
         return s;
     }
 
@@ -158,9 +159,11 @@ public final class ParameterSender implements AutoCloseable {
             long end = System.currentTimeMillis() + ackTimeoutMs;
             long left;
             while (running && (left = end - System.currentTimeMillis()) > 0) {
-                if (poller.poll(Math.min(left, 100)) > 0 && poller.pollin(0)) {
-                    // One request in flight per socket, so any reply is the ack of this query.
-                    return ZMsg.recvMsg(socket, false) != null;
+                poller.poll(Math.min(left, 50));
+                // One request in flight per socket, so any reply is the ack of this query. Read
+                // without trusting the poller's flags: JeroMQ's poller can miss an edge.
+                if (ZMsg.recvMsg(socket, false) != null) {
+                    return true;
                 }
             }
             return false;

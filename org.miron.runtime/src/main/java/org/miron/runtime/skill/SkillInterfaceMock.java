@@ -74,15 +74,13 @@ public final class SkillInterfaceMock implements AutoCloseable {
             poller.register(rep, ZMQ.Poller.POLLIN);
             while (active) {
                 poller.poll(nextTimeout());
-                if (poller.pollin(0)) {
-                    byte[] request = rep.recv(ZMQ.DONTWAIT);
+                byte[] request; // read whatever the poller says: JeroMQ's poller can miss an edge
+                while (active && (request = rep.recv(ZMQ.DONTWAIT)) != null) {
                     while (rep.hasReceiveMore()) {
                         rep.recv(); // REP strips the envelope; extra body frames are not expected
                     }
-                    if (request != null) {
-                        handle(request);
-                        rep.send(new byte[0]); // ack
-                    }
+                    handle(request);
+                    rep.send(new byte[0]); // ack
                 }
                 finishDue(System.currentTimeMillis());
             }
@@ -95,7 +93,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
 
     private long nextTimeout() {
         long now = System.currentTimeMillis();
-        long t = 100;
+        long t = 50;
         for (Running r : running) {
             t = Math.min(t, Math.max(0, r.dueMillis() - now));
         }
