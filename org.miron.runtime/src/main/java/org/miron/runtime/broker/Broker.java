@@ -1,0 +1,70 @@
+package org.miron.runtime.broker;
+
+import java.util.logging.Logger;
+import org.miron.runtime.Endpoints;
+import org.zeromq.ZContext;
+
+/**
+ * The MIRoN broker: the request path to the skill interface and the publish/subscribe bus with
+ * its last-value cache, each on its own thread. Binds in {@link #start()} so a busy port fails
+ * the caller instead of a background thread.
+ */
+public final class Broker implements AutoCloseable {
+    private static final Logger LOG = Logger.getLogger(Broker.class.getName());
+    private final Endpoints endpoints;
+    private final ZContext ctx = new ZContext();
+    private final LastValueCache cache = new LastValueCache(10_000);
+    private RequestProxy requests;
+    private BusProxy bus;
+    private Thread requestThread;
+    private Thread busThread;
+
+    public Broker(Endpoints endpoints) {
+        this.endpoints = endpoints;
+    }
+
+    public Broker start() {
+        requests = new RequestProxy(ctx, endpoints.request(), endpoints.skill());
+        bus = new BusProxy(ctx, endpoints.busIn(), endpoints.busOut(), cache);
+        try {
+            requests.bind();
+            bus.bind();
+        } catch (RuntimeException e) {
+            ctx.close();
+            throw new IllegalStateException("broker cannot bind its endpoints: " + e.getMessage(), e);
+        }
+        requestThread = new Thread(requests, "broker-requests");
+        busThread = new Thread(bus, "broker-bus");
+        requestThread.setDaemon(true);
+        busThread.setDaemon(true);
+        requestThread.start();
+        busThread.start();
+        LOG.info("broker: requests " + endpoints.request() + " -> " + endpoints.skill()
+                + ", bus " + endpoints.busIn() + " -> " + endpoints.busOut());
+        return this;
+    }
+
+    /** Number of topics held by the last-value cache (diagnostics, tests). */
+    public int cachedTopics() {
+        return cache.size();
+    }
+
+    @Override
+    public void close() {
+        if (requests != null) {
+            requests.stop();
+            bus.stop();
+            join(requestThread);
+            join(busThread);
+        }
+        ctx.close();
+    }
+
+    private static void join(Thread t) {
+        try {
+            t.join(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,114 @@
+package org.miron.runtime.broker;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.logging.Logger;
+import org.zeromq.SocketType;
+import org.zeromq.ZContext;
+import org.zeromq.ZMQ;
+import org.zeromq.ZMsg;
+import org.zeromq.ZFrame;
+
+/**
+ * XSUB/XPUB forwarder with a last-value cache.
+ *
+ * <p>Design: the XSUB side subscribes to everything (so the cache sees every topic, whatever the
+ * subscribers want) and downstream subscriptions are not forwarded upstream. The XPUB side runs
+ * with {@code XPUB_VERBOSE} so every subscribe message arrives here, even a repeated prefix. On a
+ * subscription to prefix P the cached last message of every topic starting with P is re-sent on
+ * the XPUB. ZeroMQ has already registered the new subscription when we read it, so the late
+ * joiner gets the replay. JeroMQ 0.6 has neither {@code XPUB_MANUAL_LAST_VALUE} nor welcome
+ * messages, and XPUB always delivers to every matching pipe, so subscribers that already hold P
+ * receive an identical copy of the current value (same body, same {@code seq}): bus messages are
+ * state, so that repeat is harmless and receivers may drop it by {@code seq}.
+ */
+final class BusProxy implements Runnable {
+    private static final Logger LOG = Logger.getLogger(BusProxy.class.getName());
+    private final ZContext ctx;
+    private final String inEndpoint;
+    private final String outEndpoint;
+    private final LastValueCache cache;
+    private ZMQ.Socket xsub;
+    private ZMQ.Socket xpub;
+    private volatile boolean running = true;
+
+    BusProxy(ZContext ctx, String inEndpoint, String outEndpoint, LastValueCache cache) {
+        this.ctx = ctx;
+        this.inEndpoint = inEndpoint;
+        this.outEndpoint = outEndpoint;
+        this.cache = cache;
+    }
+
+    /** Binds both sockets; called on the starting thread so bind errors surface to the caller. */
+    void bind() {
+        xsub = ctx.createSocket(SocketType.XSUB);
+        xpub = ctx.createSocket(SocketType.XPUB);
+        xsub.setLinger(0);
+        xpub.setLinger(0);
+        xpub.setXpubVerbose(true);
+        xsub.bind(inEndpoint);
+        xpub.bind(outEndpoint);
+        xsub.send(new byte[] {1}); // subscribe to all topics; XSUB repeats it to every new publisher
+    }
+
+    void stop() {
+        running = false;
+    }
+
+    @Override
+    public void run() {
+        try (ZMQ.Poller poller = ctx.createPoller(2)) {
+            poller.register(xsub, ZMQ.Poller.POLLIN);
+            poller.register(xpub, ZMQ.Poller.POLLIN);
+            while (running && !Thread.currentThread().isInterrupted()) {
+                poller.poll(50);
+                // Drain both sockets whatever the poller says: JeroMQ's poller can miss an edge
+                // (a subscription then waits for the next event), non-blocking reads cannot.
+                boolean busy = true;
+                while (busy && running) {
+                    busy = forward() | subscription();
+                }
+            }
+        } catch (RuntimeException e) {
+            if (running) {
+                LOG.severe("bus proxy stopped: " + e);
+            }
+        }
+    }
+
+    private boolean forward() {
+        ZMsg msg = ZMsg.recvMsg(xsub, false);
+        if (msg == null) {
+            return false;
+        }
+        List<byte[]> frames = new ArrayList<>();
+        for (ZFrame f : msg) {
+            frames.add(f.getData());
+        }
+        cache.put(frames);
+        send(xpub, frames);
+        return true;
+    }
+
+    private boolean subscription() {
+        byte[] data = xpub.recv(ZMQ.DONTWAIT);
+        if (data == null) {
+            return false;
+        }
+        if (data.length == 0 || data[0] != 1) {
+            return true; // unsubscribe or garbage: nothing to replay
+        }
+        byte[] prefix = Arrays.copyOfRange(data, 1, data.length);
+        for (List<byte[]> frames : cache.matching(prefix)) {
+            send(xpub, frames);
+        }
+        return true;
+    }
+
+    private static void send(ZMQ.Socket socket, List<byte[]> frames) {
+        for (int i = 0; i < frames.size(); i++) {
+            socket.send(frames.get(i), i < frames.size() - 1 ? ZMQ.SNDMORE : 0);
+        }
+    }
+}

@@ -1,0 +1,36 @@
+package org.miron.runtime.cli;
+
+import java.util.concurrent.Callable;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.broker.Broker;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code miron broker}: request path to the skill interface and the bus with last-value cache. */
+@Command(name = "broker", mixinStandardHelpOptions = true,
+        description = "Run the MIRoN broker: ROUTER/DEALER request path and XSUB/XPUB bus with last-value cache.")
+public final class BrokerCommand implements Callable<Integer> {
+    @Option(names = "--request", description = "ROUTER endpoint for REQ clients (default: ${DEFAULT-VALUE})")
+    String request = Endpoints.DEFAULT_REQUEST;
+
+    @Option(names = "--skill", description = "skill interface REP the DEALER connects to (default: ${DEFAULT-VALUE})")
+    String skill = Endpoints.DEFAULT_SKILL;
+
+    @Option(names = "--bus-in", description = "XSUB endpoint publishers connect to (default: ${DEFAULT-VALUE})")
+    String busIn = Endpoints.DEFAULT_BUS_IN;
+
+    @Option(names = "--bus-out", description = "XPUB endpoint subscribers connect to (default: ${DEFAULT-VALUE})")
+    String busOut = Endpoints.DEFAULT_BUS_OUT;
+
+    @Override
+    public Integer call() {
+        Broker broker;
+        try {
+            broker = new Broker(new Endpoints(request, skill, Endpoints.DEFAULT_SKILL_EVENTS, busIn, busOut)).start();
+        } catch (IllegalStateException e) {
+            System.err.println("miron broker: error: " + e.getMessage());
+            return 2;
+        }
+        return UntilShutdown.run("broker", broker);
+    }
+}

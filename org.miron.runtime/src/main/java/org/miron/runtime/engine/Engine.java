@@ -1,0 +1,276 @@
+package org.miron.runtime.engine;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.logging.Logger;
+import org.miron.runtime.Json;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+
+/**
+ * The adaptation engine. Threads: the bus client (inputs in, outputs out), the solve loop (one
+ * solve at a time on the latest inputs) and the parameter sender (acknowledged change-parameter
+ * queries). Nothing an input or a solver does ends the solve loop.
+ */
+public final class Engine implements AutoCloseable {
+    private static final Logger LOG = Logger.getLogger(Engine.class.getName());
+
+    private final IoModel model;
+    private final SolverBackend backend;
+    private final EngineOptions options;
+    private final InputState state;
+    private final InputDecoder decoder;
+    private final EngineStatus status;
+    private final Map<String, Integer> applied = new LinkedHashMap<>(); // solve thread only
+    private volatile Map<String, Object> appliedValues = Map.of();
+    private BusClient bus;
+    private ParameterSender sender;
+    private DecisionLog log;
+    private Thread loop;
+    private volatile boolean running;
+    private long seq;
+
+    public Engine(IoModel model, SolverBackend backend, EngineOptions options) {
+        this.model = model;
+        this.backend = backend;
+        this.options = options;
+        this.state = new InputState(model);
+        this.decoder = new InputDecoder(model, state);
+        this.status = new EngineStatus(model.model(), backend.name());
+    }
+
+    /** Loads the io.json and builds the backend named in the options. */
+    public static Engine create(EngineOptions options) throws EngineStartException {
+        IoModel model;
+        try {
+            model = IoModel.load(options.ioJson);
+        } catch (IllegalArgumentException e) {
+            throw new EngineStartException("invalid io.json: " + e.getMessage());
+        }
+        if (!options.backend.equals("minizinc")) {
+            throw new EngineStartException("unknown backend '" + options.backend + "' (available: minizinc)");
+        }
+        return new Engine(model, new MiniZincBackend(model, options.minizinc, options.solver, options.timeLimitMs),
+                options);
+    }
+
+    public Engine start() throws EngineStartException {
+        try {
+            backend.check();
+        } catch (BackendUnavailableException e) {
+            throw new EngineStartException(e.getMessage());
+        }
+        if (options.decisionLog != null) {
+            try {
+                log = new DecisionLog(options.decisionLog);
+            } catch (IOException e) {
+                throw new EngineStartException("cannot open decision log " + options.decisionLog + ": " + e.getMessage());
+            }
+        }
+        running = true;
+        bus = new BusClient("engine", options.busIn, options.busOut,
+                List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).start();
+        sender = new ParameterSender(options.request, options.ackTimeoutMs, options.backoffMinMs,
+                options.backoffMaxMs, new SenderReports()).start();
+        loop = new Thread(this::solveLoop, "engine-solve");
+        loop.setDaemon(true);
+        loop.start();
+        LOG.info("engine: model " + model.model() + ", backend " + backend.name() + ", bus " + options.busIn
+                + " / " + options.busOut + ", requests " + options.request);
+        return this;
+    }
+
+    private void onMessage(String topic, byte[] body) {
+        try {
+            decoder.apply(topic, body);
+        } catch (BadInputException e) {
+            String counter = switch (e.kind()) {
+                case MALFORMED -> "malformedInput";
+                case UNKNOWN -> "unknownInput";
+                case TYPE -> "badTypeInput";
+            };
+            status.count(counter);
+            status.error(counter, topic + ": " + e.getMessage());
+            LOG.warning("dropped " + topic + " message: " + e.getMessage());
+            publishStatus();
+        }
+    }
+
+    private void solveLoop() {
+        long seen = 0;
+        while (running) {
+            try {
+                InputState.Snapshot snap = state.awaitChange(seen, 200);
+                if (snap == null) {
+                    continue;
+                }
+                seen = snap.version();
+                SolveResult r = backend.solve(snap.params());
+                if (running) {
+                    handle(r, snap);
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            } catch (RuntimeException e) { // a bug must not stop adaptation: report and go on
+                LOG.severe("solve loop: " + e);
+                status.error("internal", String.valueOf(e));
+                publishStatus();
+            }
+        }
+    }
+
+    private void handle(SolveResult r, InputState.Snapshot snap) {
+        if (r.solved()) {
+            String bad = outOfRange(r);
+            if (bad != null) {
+                r = SolveResult.failed(SolveResult.Status.ERROR, bad, r.millis());
+            }
+        }
+        status.solveOutcome(r);
+        ObjectNode entry = Json.object();
+        entry.put("time", System.currentTimeMillis());
+        entry.put("model", model.model());
+        entry.put("backend", backend.name());
+        entry.put("solveMs", r.millis());
+        entry.put("outcome", r.status().name());
+        entry.set("inputs", Json.MAPPER.valueToTree(snap.params()));
+        if (r.solved()) {
+            apply(r, entry);
+        } else {
+            entry.put("message", r.message());
+            LOG.warning("solve failed (" + r.status() + "), keeping the last configuration: " + r.message());
+        }
+        if (log != null) {
+            log.append(entry);
+        }
+        publishStatus();
+    }
+
+    private String outOfRange(SolveResult r) {
+        for (VarPoint vp : model.varpoints()) {
+            int idx = r.decisions().get(vp.decision());
+            if (idx < 0 || idx >= vp.values().size()) {
+                return vp.decision() + " = " + idx + " is not an index of " + vp.name() + "'s values";
+            }
+        }
+        return null;
+    }
+
+    private void apply(SolveResult r, ObjectNode entry) {
+        seq++;
+        ArrayNode changed = Json.MAPPER.createArrayNode();
+        ObjectNode decisions = Json.object();
+        Map<String, Object> values = new LinkedHashMap<>();
+        for (VarPoint vp : model.varpoints()) {
+            int idx = r.decisions().get(vp.decision());
+            JsonNode value = vp.values().get(idx);
+            decisions.set(vp.name(), value);
+            values.put(vp.name(), value);
+            Integer before = applied.put(vp.name(), idx);
+            if (before == null || before != idx) {
+                changed.add(vp.name());
+                send(vp, value);
+                state.setCurrent(vp, idx);
+            }
+        }
+        appliedValues = values;
+        entry.put("seq", seq);
+        entry.put("optimal", r.optimal());
+        entry.set("decisions", decisions);
+        entry.set("changed", changed);
+        bus.publish(Topics.DECISION, Json.write(entry));
+    }
+
+    private void send(VarPoint vp, JsonNode value) {
+        String type = vp.bindingType();
+        if (type.equals("bt") || type.equals("btport")) {
+            ObjectNode msg = Json.object();
+            msg.put("varpoint", vp.name());
+            msg.set("value", value);
+            msg.put("seq", seq);
+            msg.put("time", System.currentTimeMillis());
+            String prefix = type.equals("bt") ? Topics.VARIANT_PREFIX : Topics.BLACKBOARD_PREFIX;
+            bus.publish(prefix + vp.name(), Json.write(msg));
+        } else if (type.equals("arch")) {
+            sender.submit(vp.name(), ParameterSender.changeParameter(vp.binding(), value.asDouble()));
+        }
+    }
+
+    private void publishStatus() {
+        bus.publish(Topics.STATUS, Json.write(status.toJson(appliedValues)));
+    }
+
+    /** Counters and last error (tests, diagnostics). */
+    public EngineStatus status() {
+        return status;
+    }
+
+    /** The configuration in force: varpoint → value. */
+    public Map<String, Object> applied() {
+        return appliedValues;
+    }
+
+    public boolean isAlive() {
+        return running && loop.isAlive();
+    }
+
+    public IoModel model() {
+        return model;
+    }
+
+    @Override
+    public void close() {
+        running = false;
+        if (loop != null) {
+            loop.interrupt();
+            try {
+                loop.join(5000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+        if (sender != null) {
+            sender.close();
+        }
+        if (bus != null) {
+            try {
+                bus.flush(500);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            bus.close();
+        }
+        if (log != null) {
+            log.close();
+        }
+        backend.close();
+    }
+
+    /** Parameter sender progress → counters and status. */
+    private final class SenderReports implements ParameterSender.Listener {
+        @Override
+        public void sent(String key, ObjectNode query) {
+            status.count("paramSent");
+        }
+
+        @Override
+        public void acked(String key, ObjectNode query) {
+            status.count("paramAcked");
+            LOG.info("change-parameter acknowledged: " + query.path("query").path("Parameter").asText() + " = "
+                    + query.path("query").path("values").path("1"));
+        }
+
+        @Override
+        public void retry(String key, ObjectNode query, int attempt, long backoffMs) {
+            status.count("paramRetries");
+            status.error("parameter", "no ack for " + key + " (attempt " + attempt + "), retrying in " + backoffMs + " ms");
+            publishStatus();
+        }
+    }
+}

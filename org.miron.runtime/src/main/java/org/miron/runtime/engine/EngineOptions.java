@@ -1,0 +1,32 @@
+package org.miron.runtime.engine;
+
+import java.nio.file.Path;
+import org.miron.runtime.Endpoints;
+
+/** Engine settings; defaults are the MIRoN loopback endpoints and the minizinc backend. */
+public final class EngineOptions {
+    public Path ioJson;
+    public String busIn = Endpoints.DEFAULT_BUS_IN;
+    public String busOut = Endpoints.DEFAULT_BUS_OUT;
+    public String request = Endpoints.DEFAULT_REQUEST;
+    public String backend = "minizinc";
+    public String minizinc = "minizinc";
+    public String solver = "gecode";
+    public long timeLimitMs = 2000;
+    /** Null: no decision log. */
+    public Path decisionLog;
+    public long ackTimeoutMs = 1000;
+    public long backoffMinMs = 200;
+    public long backoffMaxMs = 5000;
+
+    public EngineOptions(Path ioJson) {
+        this.ioJson = ioJson;
+    }
+
+    public EngineOptions endpoints(Endpoints e) {
+        busIn = e.busIn();
+        busOut = e.busOut();
+        request = e.request();
+        return this;
+    }
+}

@@ -1,0 +1,117 @@
+package org.miron.runtime.engine;
+
+import static org.junit.Assert.assertNotNull;
+import static org.junit.Assert.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.List;
+import java.util.function.Predicate;
+import org.miron.runtime.BusProbe;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.Ports;
+import org.miron.runtime.broker.Broker;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.skill.SkillInterfaceMock;
+import org.miron.runtime.skill.SkillTable;
+
+/**
+ * Broker, skill interface mock, a bus probe, a test publisher and an engine on the test model
+ * (copied to {@code dir} so a test may corrupt it), all on fresh loopback ports.
+ */
+public final class EngineFixture implements AutoCloseable {
+    public static final long TIMEOUT = 20_000;
+    public final Endpoints endpoints = Ports.endpoints();
+    public final Path dir;
+    public final Path ioJson;
+    public final Path mzn;
+    public Broker broker;
+    public SkillInterfaceMock skills;
+    public BusProbe probe;
+    public BusClient input;
+    public Engine engine;
+
+    public EngineFixture(Path dir) throws IOException {
+        this.dir = dir;
+        for (String f : List.of("testbot.io.json", "testbot.mzn", "testbot.dzn")) {
+            try (InputStream in = EngineFixture.class.getResourceAsStream("/models/" + f)) {
+                Files.copy(in, dir.resolve(f), StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
+        ioJson = dir.resolve("testbot.io.json");
+        mzn = dir.resolve("testbot.mzn");
+    }
+
+    public EngineOptions options() {
+        EngineOptions o = new EngineOptions(ioJson).endpoints(endpoints);
+        o.timeLimitMs = 5000;
+        o.decisionLog = dir.resolve("decisions.jsonl");
+        o.ackTimeoutMs = 500;
+        o.backoffMinMs = 100;
+        o.backoffMaxMs = 400;
+        return o;
+    }
+
+    /** Broker, probe and input publisher; the skill mock and the engine are started separately. */
+    public EngineFixture startInfrastructure() throws InterruptedException {
+        broker = new Broker(endpoints).start();
+        probe = new BusProbe(endpoints.busOut(), "miron.");
+        input = new BusClient("test-input", endpoints.busIn(), null, List.of(), (t, b) -> { }).start();
+        assertTrue("test publisher reaches the broker", input.awaitReady(TIMEOUT));
+        return this;
+    }
+
+    public EngineFixture startSkills() {
+        skills = new SkillInterfaceMock(endpoints.skill(), endpoints.skillEvents(), SkillTable.defaults()).start();
+        return this;
+    }
+
+    public EngineFixture startEngine(EngineOptions o) throws EngineStartException {
+        engine = Engine.create(o).start();
+        return this;
+    }
+
+    /** Everything, then waits for the initial decision. */
+    public EngineFixture startAll() throws Exception {
+        startInfrastructure();
+        startSkills();
+        startEngine(options());
+        assertNotNull("initial task decision", awaitVariant("task", "pickDeliverCharge"));
+        return this;
+    }
+
+    public JsonNode awaitVariant(String vp, String value) throws InterruptedException {
+        return probe.await(Topics.VARIANT_PREFIX + vp, b -> value.equals(b.path("value").asText()), TIMEOUT);
+    }
+
+    public JsonNode awaitStatus(Predicate<JsonNode> p) throws InterruptedException {
+        return probe.await(Topics.STATUS, p, TIMEOUT);
+    }
+
+    public void estimate(String name, double value) {
+        input.publish(Topics.ESTIMATE, "{\"name\":\"" + name + "\",\"namespace\":\"Intralogistics\",\"value\":" + value
+                + ",\"time\":" + System.currentTimeMillis() + "}");
+    }
+
+    public void publish(String topic, String body) {
+        input.publish(topic, body);
+    }
+
+    @Override
+    public void close() {
+        for (AutoCloseable c : new AutoCloseable[] {engine, skills, input, probe, broker}) {
+            if (c != null) {
+                try {
+                    c.close();
+                } catch (Exception ignored) {
+                    // best effort
+                }
+            }
+        }
+    }
+}
