@@ -185,16 +185,16 @@ public final class TreeBuilder {
     private Node control(ControlNode control, NodeInfo info, List<Node> children) {
         String tag = control.getTag();
         if (control instanceof Sequence) {
-            return "ReactiveSequence".equals(tag) ? new ReactiveSequenceNode(info, children) : new SequenceNode(info, children);
+            return "ReactiveSequence".equals(tag) ? ReactiveNode.sequence(info, children) : OrderedNode.sequence(info, children);
         }
         if (control instanceof Fallback) {
-            return "ReactiveFallback".equals(tag) ? new ReactiveFallbackNode(info, children) : new FallbackNode(info, children);
+            return "ReactiveFallback".equals(tag) ? ReactiveNode.fallback(info, children) : OrderedNode.fallback(info, children);
         }
         if (control instanceof SequenceStar) {
-            return new SequenceStarNode(info, children);
+            return OrderedNode.sequenceStar(info, children);
         }
         if (control instanceof FallbackStar) {
-            return new FallbackStarNode(info, children);
+            return OrderedNode.fallbackStar(info, children);
         }
         if (control instanceof Parallel) {
             checkThreshold(info, ParallelNode.SUCCESS_THRESHOLD, true, children.size());
@@ -224,13 +224,13 @@ public final class TreeBuilder {
             return new ForceFailureNode(info, child);
         }
         if (decorator instanceof Repeat) {
-            checkIntPort(info, RepeatNode.NUM_CYCLES);
-            return new RepeatNode(info, child);
+            checkIntPort(info, LoopNode.NUM_CYCLES);
+            return LoopNode.repeat(info, child);
         }
         if (decorator instanceof RetryUntilSuccess) {
             // both spellings, RetryUntilSuccesful (BT.CPP 3.5-3.6) and RetryUntilSuccessful
-            checkIntPort(info, RetryNode.NUM_ATTEMPTS);
-            return new RetryNode(info, child);
+            checkIntPort(info, LoopNode.NUM_ATTEMPTS);
+            return LoopNode.retry(info, child);
         }
         if (decorator instanceof Timeout) {
             checkIntPort(info, TimeoutNode.MSEC);

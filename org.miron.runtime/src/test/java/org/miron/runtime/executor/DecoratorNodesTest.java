@@ -171,7 +171,7 @@ public class DecoratorNodesTest {
     @Test
     public void retryOldSpellingBehavesTheSame() {
         Tree tree = tree("RetryOldSpelling");
-        assertEquals(RetryNode.class, tree.root().getClass());
+        assertEquals(LoopNode.class, tree.root().getClass());
         a.returns(FAILURE);
         assertEquals(FAILURE, tree.tickRoot());
         assertEquals(2, a.ticks);
