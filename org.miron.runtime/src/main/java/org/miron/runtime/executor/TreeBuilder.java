@@ -218,10 +218,10 @@ public final class TreeBuilder {
             return new InverterNode(info, child);
         }
         if (decorator instanceof ForceSuccess) {
-            return new ForceSuccessNode(info, child);
+            return new ForceNode(info, child, NodeStatus.SUCCESS);
         }
         if (decorator instanceof ForceFailure) {
-            return new ForceFailureNode(info, child);
+            return new ForceNode(info, child, NodeStatus.FAILURE);
         }
         if (decorator instanceof Repeat) {
             checkIntPort(info, LoopNode.NUM_CYCLES);
