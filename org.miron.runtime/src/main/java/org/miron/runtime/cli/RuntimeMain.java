@@ -8,7 +8,7 @@ import picocli.CommandLine.Command;
  * {@code play}); the top-level {@code miron} command registers the same classes as subcommands.
  */
 @Command(name = "miron-runtime", mixinStandardHelpOptions = true,
-        subcommands = {BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class},
+        subcommands = {BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class, ExecuteCommand.class},
         description = "MIRoN runtime components.")
 public final class RuntimeMain implements Runnable {
     @CommandLine.Spec

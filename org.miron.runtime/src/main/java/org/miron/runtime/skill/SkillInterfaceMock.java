@@ -36,6 +36,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
     private final List<ParameterChange> history = new ArrayList<>();
     private final Map<String, JsonNode> committed = new LinkedHashMap<>();
     private final List<ObjectNode> results = new ArrayList<>();
+    private final List<JsonNode> pushed = new ArrayList<>();
     private final List<Running> running = new ArrayList<>(); // loop thread only
     private ZMQ.Socket rep;
     private ZMQ.Socket pub;
@@ -155,6 +156,10 @@ public final class SkillInterfaceMock implements AutoCloseable {
 
     private void push(long id, JsonNode skill) {
         String name = skill.path("name").asText();
+        synchronized (this) {
+            pushed.add(skill.deepCopy());
+            notifyAll();
+        }
         SkillTable.Entry entry = table.lookup(name);
         running.add(new Running(id, name, System.currentTimeMillis() + entry.durationMs(), entry));
     }
@@ -199,6 +204,11 @@ public final class SkillInterfaceMock implements AutoCloseable {
     /** Committed values of a tag such as {@code COMMNAVIGATIONOBJECTS.CDLPARAMETER.TRANSVEL}. */
     public synchronized Optional<JsonNode> committed(String tag) {
         return Optional.ofNullable(committed.get(tag));
+    }
+
+    /** The skill part of every push-skill request received so far (name, in-attribute...). */
+    public synchronized List<JsonNode> pushed() {
+        return List.copyOf(pushed);
     }
 
     /** Skill results published so far. */

@@ -1,0 +1,77 @@
+package org.miron.runtime.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.executor.BtBuildException;
+import org.miron.runtime.executor.ConsoleTracePrinter;
+import org.miron.runtime.executor.NodeStatus;
+import org.miron.runtime.live.LiveExecutor;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code miron execute TREE}: runs a (woven) behaviour tree against the bus and the skill interface. */
+@Command(name = "execute", mixinStandardHelpOptions = true,
+        description = "Run a behaviour tree (.bt or woven .ext.xml): VariantAction nodes follow the engine's "
+                + "decisions, other actions are pushed as skills to the skill interface; prints a trace.",
+        exitCodeListHeading = "Exit codes:%n",
+        exitCodeList = { "0:the tree succeeded", "1:the tree failed", "2:the tree cannot be loaded",
+                "3:stopped (SIGTERM/Ctrl-C) while running" })
+public final class ExecuteCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "TREE", description = "the tree file")
+    Path treeFile;
+
+    @Option(names = "--period", paramLabel = "MS", description = "tick period in ms (default: ${DEFAULT-VALUE})")
+    long periodMs = 100;
+
+    @Option(names = "--request", description = "broker ROUTER for skill requests (default: ${DEFAULT-VALUE})")
+    String request = Endpoints.DEFAULT_REQUEST;
+
+    @Option(names = "--skill-events", description = "skill interface PUB with skill results (default: ${DEFAULT-VALUE})")
+    String skillEvents = Endpoints.DEFAULT_SKILL_EVENTS;
+
+    @Option(names = "--bus-in", description = "broker XSUB (default: ${DEFAULT-VALUE})")
+    String busIn = Endpoints.DEFAULT_BUS_IN;
+
+    @Option(names = "--bus-out", description = "broker XPUB with the engine's decisions (default: ${DEFAULT-VALUE})")
+    String busOut = Endpoints.DEFAULT_BUS_OUT;
+
+    @Override
+    public Integer call() {
+        if (!Files.isRegularFile(treeFile)) {
+            System.err.println(treeFile + ": error: no such file");
+            return 2;
+        }
+        Endpoints endpoints = new Endpoints(request, Endpoints.DEFAULT_SKILL, skillEvents, busIn, busOut);
+        try (LiveExecutor executor = new LiveExecutor(endpoints)) {
+            try {
+                executor.build(treeFile, new ConsoleTracePrinter());
+            } catch (BtBuildException e) {
+                System.err.println("miron execute: error: " + e.getMessage());
+                return 2;
+            }
+            CountDownLatch finished = new CountDownLatch(1);
+            Thread hook = new Thread(() -> {
+                executor.stop();
+                try {
+                    finished.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, "miron-execute-shutdown");
+            Runtime.getRuntime().addShutdownHook(hook);
+            NodeStatus status;
+            try {
+                status = executor.run(Duration.ofMillis(periodMs));
+            } finally {
+                finished.countDown();
+            }
+            System.out.println("tree " + executor.tree().id() + " finished: " + status);
+            return status == NodeStatus.SUCCESS ? 0 : status == NodeStatus.FAILURE ? 1 : 3;
+        }
+    }
+}

@@ -1,0 +1,119 @@
+package org.miron.runtime.live;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertNotNull;
+import static org.junit.Assert.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.NullNode;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
+import org.junit.After;
+import org.junit.Before;
+import org.junit.Test;
+import org.miron.runtime.BusProbe;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.Json;
+import org.miron.runtime.Ports;
+import org.miron.runtime.broker.Broker;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.executor.NodeStatus;
+import org.miron.runtime.skill.SkillInterfaceMock;
+import org.miron.runtime.skill.SkillTable;
+
+/**
+ * The woven intralogistics tree run by the live executor over real loopback sockets: a broker, the
+ * mock skill interface, and decisions published on the bus as the engine would publish them.
+ */
+public class LiveExecutorTest {
+    private static final Path WOVEN = Path.of("src/test/resources/executor/intralogistics.ext.xml");
+
+    private final Endpoints endpoints = Ports.endpoints();
+    private Broker broker;
+    private SkillInterfaceMock skills;
+    private BusClient engine;
+    private LiveExecutor executor;
+
+    @Before
+    public void start() {
+        broker = new Broker(endpoints).start();
+        SkillTable.Entry navigate = new SkillTable.Entry(400, "SUCCESS", NullNode.getInstance(), Json.object());
+        SkillTable.Entry handle = new SkillTable.Entry(50, "SUCCESS", NullNode.getInstance(), Json.object());
+        skills = new SkillInterfaceMock(endpoints.skill(), endpoints.skillEvents(),
+                new SkillTable(Map.of("navigate", navigate, "objectpick", handle, "objectdrop", handle))).start();
+        engine = new BusClient("fake-engine", endpoints.busIn(), null, List.of(), (t, b) -> { }).start();
+    }
+
+    @After
+    public void stop() {
+        if (executor != null) {
+            executor.close();
+        }
+        engine.close();
+        skills.close();
+        broker.close();
+    }
+
+    private void decide(String value) {
+        engine.publish(Topics.VARIANT_PREFIX + "task",
+                "{\"varpoint\":\"task\",\"value\":\"" + value + "\",\"seq\":1,\"time\":0}");
+    }
+
+    private CompletableFuture<NodeStatus> runExecutor() {
+        executor = new LiveExecutor(endpoints).build(WOVEN, null);
+        return CompletableFuture.supplyAsync(() -> executor.run(Duration.ofMillis(20)));
+    }
+
+    private JsonNode awaitPush(Predicate<JsonNode> p) throws InterruptedException {
+        long end = System.currentTimeMillis() + 10_000;
+        while (System.currentTimeMillis() < end) {
+            for (JsonNode skill : skills.pushed()) {
+                if (p.test(skill)) {
+                    return skill;
+                }
+            }
+            Thread.sleep(10);
+        }
+        return null;
+    }
+
+    private static boolean navigatesTo(JsonNode skill, double x, double y) {
+        return skill.path("name").asText().equals("navigate") && skill.path("in-attribute").path("x").asDouble() == x
+                && skill.path("in-attribute").path("y").asDouble() == y;
+    }
+
+    @Test
+    public void dockDecisionHaltsTheMissionAndRunsCharge() throws Exception {
+        CompletableFuture<NodeStatus> run = runExecutor();
+        // No decision yet: the Switch runs its default, the nominal PickDeliverCharge, which goes to the shelf.
+        assertNotNull("the nominal mission starts", awaitPush(s -> navigatesTo(s, -6.5, 1.25)));
+
+        decide("dock");
+
+        assertEquals(NodeStatus.SUCCESS, run.get(10, TimeUnit.SECONDS));
+        assertTrue("the running skill was aborted",
+                skills.results().stream().anyMatch(r -> r.path("result").path("result").asText().equals("ABORT")));
+        List<JsonNode> pushed = skills.pushed();
+        assertTrue(pushed.toString(), navigatesTo(pushed.get(pushed.size() - 1), -9.33, 2.17));
+        assertTrue("no pick happened", pushed.stream().noneMatch(s -> s.path("name").asText().equals("objectpick")));
+    }
+
+    @Test
+    public void lateExecutorGetsTheCurrentDecisionFromTheCache() throws Exception {
+        try (BusProbe probe = new BusProbe(endpoints.busOut(), Topics.VARIANT_PREFIX)) {
+            decide("dock");
+            assertNotNull(probe.await(Topics.VARIANT_PREFIX + "task", m -> true, 10_000));
+        }
+        CompletableFuture<NodeStatus> run = runExecutor();
+        assertEquals(NodeStatus.SUCCESS, run.get(10, TimeUnit.SECONDS));
+        List<JsonNode> pushed = skills.pushed();
+        assertEquals(pushed.toString(), 1, pushed.size());
+        assertTrue(pushed.toString(), navigatesTo(pushed.get(0), -9.33, 2.17));
+    }
+}
