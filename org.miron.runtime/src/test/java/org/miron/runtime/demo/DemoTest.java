@@ -1,0 +1,67 @@
+package org.miron.runtime.demo;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import com.fasterxml.jackson.databind.node.NullNode;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.miron.runtime.Json;
+import org.miron.runtime.Ports;
+import org.miron.runtime.player.Scenario;
+import org.miron.runtime.skill.SkillTable;
+
+/**
+ * The one-JVM demo end to end on loopback with the real minizinc: the battery runs low and the
+ * robot docks, safety drops and the velocity parameter follows, both recover; the console tells
+ * it and the report shows it.
+ */
+public class DemoTest {
+    @Rule
+    public TemporaryFolder temp = new TemporaryFolder();
+
+    @Test
+    public void batteryAndSafetyDrivesAdaptationsThatAreToldAndReported() throws Exception {
+        SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
+        SkillTable.Entry hand = new SkillTable.Entry(100, "SUCCESS", NullNode.getInstance(), Json.object());
+        ByteArrayOutputStream console = new ByteArrayOutputStream();
+        Demo demo = new Demo(Path.of("src/test/resources/models/testbot.io.json"),
+                Path.of("src/test/resources/executor/intralogistics.ext.xml"),
+                Scenario.load(Path.of("src/test/resources/demo/short.scenario.json")),
+                new SkillTable(Map.of("navigate", move, "objectpick", hand, "objectdrop", hand)),
+                temp.getRoot().toPath(), Ports.endpoints(), new PrintStream(console, true, StandardCharsets.UTF_8));
+
+        Demo.Result result = demo.run();
+
+        String told = console.toString(StandardCharsets.UTF_8);
+        assertTrue(told, told.contains("RoQME   power_autonomy = 0.2"));
+        assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch)"));
+        assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge"));
+        assertTrue(told, told.contains("ADAPT   maxVelocity -> 37 (change-parameter SmartCdServer transvel)"));
+        assertTrue(told, told.contains("ROBOT   navigate x=-9.33 y=2.17"));
+        // The dock decision comes after the low battery reading, the velocity one after low safety.
+        assertTrue(told, told.indexOf("power_autonomy = 0.2") < told.indexOf("task -> dock"));
+        assertTrue(told, told.indexOf("safety = 0.3") < told.indexOf("maxVelocity -> 37"));
+
+        assertTrue(result.adaptations() >= 4);
+        assertTrue("transvel changes reached the skill interface", result.parameterChanges() >= 2);
+        List<String> log = Files.readAllLines(result.decisionLog());
+        assertTrue(log.size() >= 4);
+
+        String report = Files.readString(result.report());
+        assertTrue(report.startsWith("<!DOCTYPE html>"));
+        assertTrue(report, report.contains("<svg"));
+        assertTrue(report, report.contains("<td>task</td><td>pickDeliverCharge</td><td>dock</td>"));
+        assertTrue(report, report.contains("metric_Intralogistics_power_autonomy = 0.2"));
+        assertEquals("the report names every metric", 2,
+                List.of("power_autonomy", "safety").stream().filter(report::contains).count());
+    }
+}
