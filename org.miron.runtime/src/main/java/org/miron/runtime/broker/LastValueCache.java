@@ -1,15 +1,22 @@
 package org.miron.runtime.broker;
 
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.miron.runtime.Json;
 
 /**
- * Latest message per topic. Topics are kept as ISO-8859-1 strings so that prefix matching is
- * byte-wise, exactly like ZeroMQ subscription matching. Bounded: the least recently updated
- * topic is evicted beyond {@code maxTopics}.
+ * Latest message per topic and subject. Several subjects share one topic ({@code roqme.estimate}
+ * carries every property, {@code roqme.context} every context), so the key is the topic plus the
+ * body's {@code namespace}/{@code name} when the body is a JSON object with a {@code name};
+ * otherwise the topic alone. A late subscriber thus gets the latest estimate of each property,
+ * not only of the last one published. Topics are kept as ISO-8859-1 strings so prefix matching
+ * is byte-wise, exactly like ZeroMQ subscription matching. Bounded: the least recently updated
+ * entry is evicted beyond {@code maxTopics}.
  */
 public final class LastValueCache {
     private final int maxTopics;
@@ -30,9 +37,26 @@ public final class LastValueCache {
         if (frames.isEmpty()) {
             return;
         }
-        String topic = new String(frames.get(0), StandardCharsets.ISO_8859_1);
-        last.remove(topic); // re-insert so eviction order follows updates
-        last.put(topic, List.copyOf(frames));
+        String key = new String(frames.get(0), StandardCharsets.ISO_8859_1) + subject(frames);
+        last.remove(key); // re-insert so eviction and replay order follow updates
+        last.put(key, List.copyOf(frames));
+    }
+
+    /** "\0namespace\0name" for bodies naming a subject, "" otherwise. */
+    private static String subject(List<byte[]> frames) {
+        if (frames.size() < 2 || frames.get(1).length == 0 || frames.get(1)[0] != '{') {
+            return "";
+        }
+        try {
+            JsonNode body = Json.MAPPER.readTree(frames.get(1));
+            JsonNode name = body.get("name");
+            if (name == null || !name.isTextual()) {
+                return "";
+            }
+            return "\0" + body.path("namespace").asText("") + "\0" + name.asText();
+        } catch (IOException | RuntimeException e) {
+            return ""; // not JSON: cached by topic only
+        }
     }
 
     /** Latest messages whose topic starts with the (byte) prefix, oldest update first. */
@@ -40,7 +64,7 @@ public final class LastValueCache {
         String p = new String(prefix, StandardCharsets.ISO_8859_1);
         List<List<byte[]>> out = new ArrayList<>();
         for (Map.Entry<String, List<byte[]>> e : last.entrySet()) {
-            if (e.getKey().startsWith(p)) {
+            if (new String(e.getValue().get(0), StandardCharsets.ISO_8859_1).startsWith(p)) {
                 out.add(e.getValue());
             }
         }

@@ -5,6 +5,7 @@ import org.miron.runtime.Connect;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
+import org.zeromq.ZFrame;
 import org.zeromq.ZMsg;
 
 /**
@@ -33,6 +34,11 @@ final class RequestProxy implements Runnable {
         backend = ctx.createSocket(SocketType.DEALER);
         frontend.setLinger(0);
         backend.setLinger(0);
+        // Queue requests only on a live connection: while the skill interface is down they are
+        // dropped (clients time out and retry) instead of piling up and replaying stale values.
+        // JeroMQ 0.6.0's flag is inverted with respect to libzmq's ZMQ_IMMEDIATE: false means
+        // "no pipe before the connection is up" (checked in ParameterRetryTest).
+        backend.setImmediate(false);
         frontend.bind(frontendEndpoint);
         Connect.connect(backend, backendEndpoint);
     }
@@ -51,7 +57,8 @@ final class RequestProxy implements Runnable {
                 // Drain regardless of the poller's flags: JeroMQ's poller can miss an edge.
                 boolean busy = true;
                 while (busy && running) {
-                    busy = relay(frontend, backend) | relay(backend, frontend);
+                    busy = relay(frontend, backend, "skill interface not connected")
+                            | relay(backend, frontend, "client gone");
                 }
             }
         } catch (RuntimeException e) {
@@ -61,12 +68,21 @@ final class RequestProxy implements Runnable {
         }
     }
 
-    private static boolean relay(ZMQ.Socket from, ZMQ.Socket to) {
+    /** Moves one message; never blocks: a message the other side cannot take now is dropped. */
+    private static boolean relay(ZMQ.Socket from, ZMQ.Socket to, String dropReason) {
         ZMsg msg = ZMsg.recvMsg(from, false);
         if (msg == null) {
             return false;
         }
-        msg.send(to);
+        int n = msg.size();
+        int i = 0;
+        for (ZFrame f : msg) {
+            boolean last = ++i == n;
+            if (!to.send(f.getData(), ZMQ.DONTWAIT | (last ? 0 : ZMQ.SNDMORE)) && i == 1) {
+                LOG.fine("request dropped: " + dropReason);
+                break; // nothing queued yet, so dropping the whole message is clean
+            }
+        }
         return true;
     }
 }

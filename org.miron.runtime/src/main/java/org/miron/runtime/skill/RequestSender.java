@@ -109,7 +109,7 @@ public final class RequestSender implements AutoCloseable {
                     backoff = backoffMinMs;
                     attempt = 0;
                 } else {
-                    ctx.destroySocket(socket);
+                    socket.close(); // drops a late reply with the socket
                     socket = null;
                     attempt++;
                     listener.retry(e.getKey(), message, attempt, backoff);

@@ -79,16 +79,30 @@ public class BrokerTest {
         ZMQ.Socket rep = ctx.createSocket(SocketType.REP);
         rep.setLinger(0);
         rep.bind(ep.skill());
-        rep.setReceiveTimeOut((int) TIMEOUT);
+        rep.setReceiveTimeOut(200);
+        // Until the broker's DEALER has connected, requests are dropped (never queued): retry.
+        ZMQ.Socket probe = ctx.createSocket(SocketType.DEALER);
+        probe.setLinger(0);
+        Connect.connect(probe, ep.request());
+        String got = null;
+        for (int i = 0; i < 100 && got == null; i++) {
+            probe.sendMore(new byte[0]);
+            probe.send("{\"probe\":" + i + "}");
+            got = rep.recvStr();
+        }
+        assertNotNull("request path comes up", got);
+        rep.send(new byte[0]);
+
         ZMQ.Socket req = ctx.createSocket(SocketType.REQ);
         req.setLinger(0);
         req.setReceiveTimeOut((int) TIMEOUT);
         Connect.connect(req, ep.request());
         req.send("{\"id\":1}");
+        rep.setReceiveTimeOut((int) TIMEOUT);
         assertEquals("{\"id\":1}", rep.recvStr());
         rep.send(new byte[0]);
         byte[] ack = req.recv();
-        assertNotNull("ack returns through ROUTER/DEALER", ack);
+        assertNotNull("ack returns through ROUTER/DEALER to the right client", ack);
         assertArrayEquals(new byte[0], ack);
     }
 
@@ -108,6 +122,20 @@ public class BrokerTest {
             Thread.sleep(10);
         }
         assertEquals(topics, broker.cachedTopics());
+    }
+
+    @Test
+    public void cacheKeepsTheLatestMessagePerNamedSubject() {
+        LastValueCache cache = new LastValueCache(10);
+        cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"safety\",\"value\":0.1}".getBytes()));
+        cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"power\",\"value\":0.2}".getBytes()));
+        cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"safety\",\"value\":0.3}".getBytes()));
+        cache.put(List.of("roqme.estimate".getBytes(), "not json".getBytes()));
+        List<List<byte[]>> all = cache.matching("roqme.".getBytes());
+        assertEquals(3, all.size());
+        assertEquals("{\"name\":\"power\",\"value\":0.2}", new String(all.get(0).get(1)));
+        assertEquals("{\"name\":\"safety\",\"value\":0.3}", new String(all.get(1).get(1)));
+        assertTrue(cache.matching("roqme.estimateX".getBytes()).isEmpty());
     }
 
     @Test

@@ -37,14 +37,19 @@ public final class EngineFixture implements AutoCloseable {
     public Engine engine;
 
     public EngineFixture(Path dir) throws IOException {
+        this(dir, "testbot");
+    }
+
+    /** @param model a model in src/test/resources/models: testbot or portbot */
+    public EngineFixture(Path dir, String model) throws IOException {
         this.dir = dir;
-        for (String f : List.of("testbot.io.json", "testbot.mzn", "testbot.dzn")) {
-            try (InputStream in = EngineFixture.class.getResourceAsStream("/models/" + f)) {
-                Files.copy(in, dir.resolve(f), StandardCopyOption.REPLACE_EXISTING);
+        for (String ext : List.of(".io.json", ".mzn", ".dzn")) {
+            try (InputStream in = EngineFixture.class.getResourceAsStream("/models/" + model + ext)) {
+                Files.copy(in, dir.resolve(model + ext), StandardCopyOption.REPLACE_EXISTING);
             }
         }
-        ioJson = dir.resolve("testbot.io.json");
-        mzn = dir.resolve("testbot.mzn");
+        ioJson = dir.resolve(model + ".io.json");
+        mzn = dir.resolve(model + ".mzn");
     }
 
     public EngineOptions options() {
