@@ -105,6 +105,26 @@ public class LiveExecutorTest {
     }
 
     @Test
+    public void theNominalIntralogisticsMissionRunsToCompletionAgainstTheSkillInterface() throws Exception {
+        Path example = Path.of(System.getProperty("miron.root", "..")).resolve("examples/intralogistics/intralogistics.bt");
+        executor = new LiveExecutor(endpoints).build(example, null);
+        assertEquals(NodeStatus.SUCCESS, executor.run(Duration.ofMillis(5)));
+
+        List<String> expected = new java.util.ArrayList<>();
+        for (int delivery = 0; delivery < 3; delivery++) {
+            expected.addAll(List.of("MoveTo -2.5 6.4", "objectpick", "MoveTo -8.08 4.11", "objectdrop"));
+        }
+        expected.add("MoveTo -9.33 2.17");
+        List<String> pushed = new java.util.ArrayList<>();
+        for (JsonNode skill : skills.pushed()) {
+            JsonNode in = skill.path("in-attribute");
+            pushed.add(skill.path("name").asText().equals("MoveTo")
+                    ? "MoveTo " + in.path("x").asDouble() + " " + in.path("y").asDouble() : skill.path("name").asText());
+        }
+        assertEquals(expected, pushed);
+    }
+
+    @Test
     public void lateExecutorGetsTheCurrentDecisionFromTheCache() throws Exception {
         try (BusProbe probe = new BusProbe(endpoints.busOut(), Topics.VARIANT_PREFIX)) {
             decide("dock");
