@@ -13,6 +13,7 @@ import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.naming.IQualifiedNameConverter;
 import org.eclipse.xtext.naming.QualifiedName;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.INode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.IEObjectDescription;
@@ -82,6 +83,31 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
 
     @Inject
     private IQualifiedNameConverter nameConverter;
+
+    /**
+     * Elements with a syntax error inside are not checked: their model is incomplete, and a
+     * check would only repeat the syntax error in confusing terms (a missing number reads as 0).
+     */
+    @Override
+    protected boolean isResponsible(Map<Object, Object> context, EObject object) {
+        if (object.eResource() != null && !object.eResource().getErrors().isEmpty() && hasSyntaxError(object)) {
+            return false;
+        }
+        return super.isResponsible(context, object);
+    }
+
+    private static boolean hasSyntaxError(EObject object) {
+        ICompositeNode node = NodeModelUtils.getNode(object);
+        if (node == null) {
+            return false;
+        }
+        for (INode n : node.getAsTreeIterable()) {
+            if (n.getSyntaxErrorMessage() != null) {
+                return true;
+            }
+        }
+        return false;
+    }
 
     // ------------------------------------------------------------------ names
 
