@@ -45,6 +45,22 @@ public class DslValueConverterService extends DefaultTerminalConverters {
         }
     }
 
+    /** A unit written as a string or as a plain word: the quotes are not part of it. */
+    @ValueConverter(rule = "UnitName")
+    public IValueConverter<String> unitName() {
+        return new IValueConverter<String>() {
+            @Override
+            public String toValue(String string, INode node) {
+                return string != null && string.startsWith("\"") ? STRING().toValue(string, node) : string;
+            }
+
+            @Override
+            public String toString(String value) {
+                return value != null && value.matches("[a-zA-Z_][a-zA-Z_0-9]*") ? value : STRING().toString(value);
+            }
+        };
+    }
+
     @ValueConverter(rule = "Number")
     public IValueConverter<Double> number() {
         return DOUBLE;

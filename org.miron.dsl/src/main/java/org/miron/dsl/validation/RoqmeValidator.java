@@ -250,7 +250,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             error(what + " of '" + v.getName() + "' is a literal of " + actual + ", but '" + v.getName() + "' is "
                     + declared, v, feature);
         } else if (!declared.comparableWith(actual)
-                && !(declared.kind == ExprType.Kind.EVENT && actual.isLogical())
+                && !(declared.kind == ExprType.Kind.EVENT && actual.isEventLike())
                 && !(declared.kind == ExprType.Kind.BOOLEAN && actual.kind == ExprType.Kind.EVENT)) {
             error(what + " of '" + v.getName() + "' has type " + actual + ", but '" + v.getName() + "' is declared "
                     + declared, v, feature);
@@ -286,7 +286,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
 
     @Check
     public void checkTimer(Timer timer) {
-        if (timer.getCondition() != null && !Types.typeOf(timer.getCondition()).isLogical()) {
+        if (timer.getCondition() != null && !Types.typeOf(timer.getCondition()).isEventLike()) {
             error("timer '" + timer.getName() + "' needs a boolean or event pattern, not "
                     + Types.typeOf(timer.getCondition()), timer, R.getTimer_Condition());
         }
@@ -295,7 +295,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     @Check
     public void checkObservation(Observation observation) {
         ExprType t = Types.typeOf(observation.getPattern());
-        if (!t.isLogical()) {
+        if (!t.isEventLike()) {
             error("the pattern of observation '" + observation.getName() + "' must be boolean or an event, not " + t,
                     observation, R.getObservation_Pattern());
         }
@@ -322,6 +322,10 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         case GT:
         case LE:
         case GE:
+            // booleans are ordered too (false < true): real models write "charging > false"
+            if (l.kind == ExprType.Kind.BOOLEAN && r.kind == ExprType.Kind.BOOLEAN) {
+                break;
+            }
             if (!l.isNumeric()) {
                 error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left());
             } else if (!r.isNumeric()) {
@@ -338,11 +342,19 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                 error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right());
             }
             break;
-        default:
+        case LOGICAL_AND:
+        case LOGICAL_OR:
             if (!l.isLogical()) {
                 error("'" + op + "' needs boolean or event operands, but the left one is " + l, e, R.getBinaryExpression_Left());
             } else if (!r.isLogical()) {
                 error("'" + op + "' needs boolean or event operands, but the right one is " + r, e, R.getBinaryExpression_Right());
+            }
+            break;
+        default: // event operators: or, and, ->
+            if (!l.isEventLike()) {
+                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l, e, R.getBinaryExpression_Left());
+            } else if (!r.isEventLike()) {
+                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r, e, R.getBinaryExpression_Right());
             }
         }
     }
@@ -372,9 +384,14 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                 error("'-' needs a number, not " + t, e, R.getUnaryExpression_Term());
             }
             break;
-        default:
+        case LOGICAL_NOT:
             if (!t.isLogical()) {
-                error("'" + e.getOperator().getLiteral() + "' needs a boolean or event operand, not " + t, e,
+                error("'!' needs a boolean or event operand, not " + t, e, R.getUnaryExpression_Term());
+            }
+            break;
+        default: // not, once
+            if (!t.isEventLike()) {
+                error("'" + e.getOperator().getLiteral() + "' needs an event, boolean or enum operand, not " + t, e,
                         R.getUnaryExpression_Term());
             }
         }
