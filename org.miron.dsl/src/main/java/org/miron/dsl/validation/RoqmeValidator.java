@@ -174,9 +174,11 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             return;
         }
         String extension = Imports.uriOf(imp) == null ? null : Imports.uriOf(imp).fileExtension();
-        if (!allowedImports().contains(extension)) {
+        if (extension == null || !allowedImports().contains(extension)) {
             error("cannot import '" + imp.getImportURI() + "': only " + String.join(", ", allowedImports())
                     + " files can be imported here", imp, R.getImport_ImportURI());
+        } else if (Imports.uriOf(imp) != null && Imports.uriOf(imp).equals(imp.eResource().getURI())) {
+            error("a file cannot import itself", imp, R.getImport_ImportURI());
         } else if (Imports.load(imp) == null) {
             error("cannot find imported file '" + imp.getImportURI() + "' (paths are relative to this file)",
                     imp, R.getImport_ImportURI());
