@@ -197,11 +197,13 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         Double lo = type.getLower();
         Double hi = type.getUpper();
         if (lo != null && hi != null && lo >= hi) {
-            error("empty range: lower bound " + fmt(lo) + " must be less than upper bound " + fmt(hi),
+            error("empty range of '" + Names.ownerName(type) + "': lower bound " + fmt(lo)
+                    + " must be less than upper bound " + fmt(hi),
                     type, R.getBoundedType_Lower());
         }
         if (type.getPrecision() != null && type.getPrecision() <= 0) {
-            error("precision must be positive, not " + fmt(type.getPrecision()), type, R.getBoundedType_Precision());
+            error("precision of '" + Names.ownerName(type) + "' must be positive, not " + fmt(type.getPrecision()),
+                    type, R.getBoundedType_Precision());
         }
     }
 
@@ -282,7 +284,10 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         EStructuralFeature feature = time.eContainingFeature();
         boolean survival = feature == R.getBeliefVariable_Survival() || feature == R.getEvidenceAction_Survival();
         if (survival && time.getValue() <= 0) {
-            error("survival must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value());
+            String owner = time.eContainer() instanceof EvidenceAction
+                    ? "the evidence in '" + Names.ownerName(time) + "'"
+                    : "'" + Names.ownerName(time) + "'";
+            error("survival of " + owner + " must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value());
         }
     }
 
@@ -424,7 +429,8 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     @Check
     public void checkRepeat(RepeatExpression e) {
         if (e.getTimes() <= 0) {
-            error("repeat count must be positive, not " + e.getTimes(), e, R.getRepeatExpression_Times());
+            error("repeat count must be positive, not " + e.getTimes() + " (in '" + Names.ownerName(e) + "')", e,
+                    R.getRepeatExpression_Times());
         }
     }
 

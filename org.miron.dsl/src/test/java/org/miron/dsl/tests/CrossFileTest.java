@@ -26,7 +26,7 @@ public class CrossFileTest {
                 .map(Models::format).collect(Collectors.toList());
         assertEquals(String.join("\n", errors), 2, errors.size());
         assertTrue(errors.toString(), errors.contains(
-                "broken.roqme:3:25: error: empty range: lower bound 10 must be less than upper bound 5"));
+                "broken.roqme:3:25: error: empty range of 'level': lower bound 10 must be less than upper bound 5"));
         assertTrue(errors.toString(), errors.contains(
                 "broken.roqme:4:22: error: reference of 'p' must be in [0,1], not 2"));
     }

@@ -27,7 +27,7 @@ import org.junit.Test;
 import org.miron.dsl.validation.MironValidator;
 
 /**
- * Broken input gives positioned errors, never exceptions: every valid model, cut short at many
+ * Broken input gives positioned errors, never exceptions: every test model, cut short at many
  * places and with random spans deleted, is parsed, linked and validated; any exception fails.
  * Validation runs through a validator that rethrows what Xtext would silently swallow (NPEs).
  */
@@ -47,7 +47,8 @@ public class RobustnessTest {
     public void mutilatedModelsNeverThrow() throws IOException {
         List<File> files = new ArrayList<>();
         try (Stream<java.nio.file.Path> paths = Files.walk(new File("src/test/resources/models").toPath())) {
-            files.addAll(paths.map(java.nio.file.Path::toFile).filter(f -> f.getParentFile().getName().equals("valid"))
+            files.addAll(paths.map(java.nio.file.Path::toFile)
+                    .filter(f -> f.getParentFile().getName().equals("valid") || f.getParentFile().getName().equals("invalid"))
                     .sorted().collect(Collectors.toList()));
         }
         files.add(new File(Models.root(), "examples/intralogistics/intralogistics.miron"));
