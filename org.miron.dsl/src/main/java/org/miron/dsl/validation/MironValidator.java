@@ -168,7 +168,8 @@ public class MironValidator extends AbstractMironValidator {
                             binding, M.getBtBinding_Xpath());
                     break;
                 } else if (binding.getInsertionType() != InsertionType.IN && !s.isTreeNode()) {
-                    error("'" + binding.getInsertionType().getLiteral() + "' needs tree nodes, but the XPath selects "
+                    error("varpoint '" + vp.getName() + "': '" + binding.getInsertionType().getLiteral()
+                            + "' needs tree nodes, but the XPath selects "
                             + s.describe(), binding, M.getBtBinding_Xpath());
                     break;
                 }
