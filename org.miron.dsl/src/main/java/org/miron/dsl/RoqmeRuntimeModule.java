@@ -1,6 +1,10 @@
 package org.miron.dsl;
 
+import org.eclipse.xtext.conversion.IValueConverterService;
 import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
+import org.eclipse.xtext.parser.antlr.ISyntaxErrorMessageProvider;
+import org.miron.dsl.conversion.DslValueConverterService;
+import org.miron.dsl.parser.DslSyntaxErrorMessageProvider;
 import org.eclipse.xtext.naming.IQualifiedNameConverter;
 import org.eclipse.xtext.naming.IQualifiedNameProvider;
 import org.miron.dsl.linking.DslLinkingDiagnosticMessageProvider;
@@ -21,5 +25,14 @@ public class RoqmeRuntimeModule extends AbstractRoqmeRuntimeModule {
 
     public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {
         return DslLinkingDiagnosticMessageProvider.class;
+    }
+
+    @Override
+    public Class<? extends IValueConverterService> bindIValueConverterService() {
+        return DslValueConverterService.class;
+    }
+
+    public Class<? extends ISyntaxErrorMessageProvider> bindISyntaxErrorMessageProvider() {
+        return DslSyntaxErrorMessageProvider.class;
     }
 }

@@ -41,6 +41,15 @@ public final class ExprType {
         return kind == Kind.BOOLEAN || kind == Kind.EVENT || isUnknown();
     }
 
+    /**
+     * Operands of the event operators (or, and, not, ->, once...) and observation patterns: also
+     * enum contexts and literals, whose change of value is the event (as real RoQME models write
+     * "ctx := Mode::BUMP" for "when the context becomes BUMP").
+     */
+    public boolean isEventLike() {
+        return isLogical() || kind == Kind.ENUM;
+    }
+
     /** Whether values of both types can be compared with = and !=. */
     public boolean comparableWith(ExprType other) {
         if (isUnknown() || other.isUnknown()) {

@@ -3,8 +3,6 @@ package org.miron.dsl.util;
 import org.eclipse.emf.ecore.EObject;
 import org.miron.dsl.naming.DslQualifiedNameProvider;
 import org.miron.dsl.roqme.EnumLiteral;
-import org.miron.dsl.roqme.TypeDefinition;
-import org.miron.dsl.roqme.Variable;
 
 /** How elements are named in messages. */
 public final class Names {
@@ -14,9 +12,15 @@ public final class Names {
 
     /** The name of the type definition or variable an enumeration belongs to. */
     public static String enumName(EObject enumType) {
-        for (EObject c = enumType; c != null; c = c.eContainer()) {
-            if (c instanceof TypeDefinition || c instanceof Variable) {
-                return DslQualifiedNameProvider.nameOf(c);
+        return ownerName(enumType);
+    }
+
+    /** The name of the type definition or variable (or other named element) that contains an element. */
+    public static String ownerName(EObject element) {
+        for (EObject c = element; c != null; c = c.eContainer()) {
+            String name = DslQualifiedNameProvider.nameOf(c);
+            if (name != null) {
+                return name;
             }
         }
         return "?";

@@ -34,6 +34,7 @@ import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.roqme.VariableRef;
 import org.miron.dsl.util.ExprType;
 import org.miron.dsl.util.Imports;
+import org.miron.dsl.util.Names;
 import org.miron.dsl.util.Types;
 
 /**
@@ -70,7 +71,7 @@ public class MironValidator extends AbstractMironValidator {
         List<BehaviorTreeLiteral> presets = new ArrayList<>();
         type.getLiterals().stream().filter(l -> l instanceof BehaviorTreeLiteral && ((BehaviorTreeLiteral) l).isPreset())
                 .forEach(l -> presets.add((BehaviorTreeLiteral) l));
-        String owner = org.miron.dsl.util.Names.enumName(type);
+        String owner = Names.enumName(type);
         if (presets.isEmpty()) {
             error("behavior tree enum of '" + owner + "' needs exactly one 'preset' literal (the nominal behaviour), found none",
                     type, R.getEnumType_Literals(), 0);
@@ -91,13 +92,16 @@ public class MironValidator extends AbstractMironValidator {
             }
             double v = sample.getValue().getValue();
             if ((type.getLower() != null && v < type.getLower()) || (type.getUpper() != null && v > type.getUpper())) {
-                error("sample " + fmt(v) + " is outside the declared range " + range(type), sample, M.getSampleValue_Value());
+                error("sample " + fmt(v) + " of '" + Names.ownerName(type) + "' is outside the declared range " + range(type),
+                        sample, M.getSampleValue_Value());
             } else if (type.getPrecision() != null && type.getPrecision() > 0 && !onGrid(v, type)) {
                 double base = type.getLower() == null ? 0 : type.getLower();
-                error("sample " + fmt(v) + " is not on the precision grid " + fmt(base) + " + k*" + fmt(type.getPrecision()),
+                error("sample " + fmt(v) + " of '" + Names.ownerName(type) + "' is not on the precision grid " + fmt(base)
+                        + " + k*" + fmt(type.getPrecision()),
                         sample, M.getSampleValue_Value());
             } else if (!seen.add(v)) {
-                error("sample " + fmt(v) + " is declared twice", sample, M.getSampleValue_Value());
+                error("sample " + fmt(v) + " of '" + Names.ownerName(type) + "' is declared twice", sample,
+                        M.getSampleValue_Value());
             }
         }
     }

@@ -13,6 +13,7 @@ import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.naming.IQualifiedNameConverter;
 import org.eclipse.xtext.naming.QualifiedName;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.INode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.IEObjectDescription;
@@ -83,6 +84,31 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     @Inject
     private IQualifiedNameConverter nameConverter;
 
+    /**
+     * Elements with a syntax error inside are not checked: their model is incomplete, and a
+     * check would only repeat the syntax error in confusing terms (a missing number reads as 0).
+     */
+    @Override
+    protected boolean isResponsible(Map<Object, Object> context, EObject object) {
+        if (object.eResource() != null && !object.eResource().getErrors().isEmpty() && hasSyntaxError(object)) {
+            return false;
+        }
+        return super.isResponsible(context, object);
+    }
+
+    private static boolean hasSyntaxError(EObject object) {
+        ICompositeNode node = NodeModelUtils.getNode(object);
+        if (node == null) {
+            return false;
+        }
+        for (INode n : node.getAsTreeIterable()) {
+            if (n.getSyntaxErrorMessage() != null) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     // ------------------------------------------------------------------ names
 
     @Check
@@ -148,9 +174,11 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             return;
         }
         String extension = Imports.uriOf(imp) == null ? null : Imports.uriOf(imp).fileExtension();
-        if (!allowedImports().contains(extension)) {
+        if (extension == null || !allowedImports().contains(extension)) {
             error("cannot import '" + imp.getImportURI() + "': only " + String.join(", ", allowedImports())
                     + " files can be imported here", imp, R.getImport_ImportURI());
+        } else if (Imports.uriOf(imp) != null && Imports.uriOf(imp).equals(imp.eResource().getURI())) {
+            error("a file cannot import itself", imp, R.getImport_ImportURI());
         } else if (Imports.load(imp) == null) {
             error("cannot find imported file '" + imp.getImportURI() + "' (paths are relative to this file)",
                     imp, R.getImport_ImportURI());
@@ -169,11 +197,13 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         Double lo = type.getLower();
         Double hi = type.getUpper();
         if (lo != null && hi != null && lo >= hi) {
-            error("empty range: lower bound " + fmt(lo) + " must be less than upper bound " + fmt(hi),
+            error("empty range of '" + Names.ownerName(type) + "': lower bound " + fmt(lo)
+                    + " must be less than upper bound " + fmt(hi),
                     type, R.getBoundedType_Lower());
         }
         if (type.getPrecision() != null && type.getPrecision() <= 0) {
-            error("precision must be positive, not " + fmt(type.getPrecision()), type, R.getBoundedType_Precision());
+            error("precision of '" + Names.ownerName(type) + "' must be positive, not " + fmt(type.getPrecision()),
+                    type, R.getBoundedType_Precision());
         }
     }
 
@@ -224,7 +254,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             error(what + " of '" + v.getName() + "' is a literal of " + actual + ", but '" + v.getName() + "' is "
                     + declared, v, feature);
         } else if (!declared.comparableWith(actual)
-                && !(declared.kind == ExprType.Kind.EVENT && actual.isLogical())
+                && !(declared.kind == ExprType.Kind.EVENT && actual.isEventLike())
                 && !(declared.kind == ExprType.Kind.BOOLEAN && actual.kind == ExprType.Kind.EVENT)) {
             error(what + " of '" + v.getName() + "' has type " + actual + ", but '" + v.getName() + "' is declared "
                     + declared, v, feature);
@@ -254,13 +284,16 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         EStructuralFeature feature = time.eContainingFeature();
         boolean survival = feature == R.getBeliefVariable_Survival() || feature == R.getEvidenceAction_Survival();
         if (survival && time.getValue() <= 0) {
-            error("survival must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value());
+            String owner = time.eContainer() instanceof EvidenceAction
+                    ? "the evidence in '" + Names.ownerName(time) + "'"
+                    : "'" + Names.ownerName(time) + "'";
+            error("survival of " + owner + " must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value());
         }
     }
 
     @Check
     public void checkTimer(Timer timer) {
-        if (timer.getCondition() != null && !Types.typeOf(timer.getCondition()).isLogical()) {
+        if (timer.getCondition() != null && !Types.typeOf(timer.getCondition()).isEventLike()) {
             error("timer '" + timer.getName() + "' needs a boolean or event pattern, not "
                     + Types.typeOf(timer.getCondition()), timer, R.getTimer_Condition());
         }
@@ -269,7 +302,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     @Check
     public void checkObservation(Observation observation) {
         ExprType t = Types.typeOf(observation.getPattern());
-        if (!t.isLogical()) {
+        if (!t.isEventLike()) {
             error("the pattern of observation '" + observation.getName() + "' must be boolean or an event, not " + t,
                     observation, R.getObservation_Pattern());
         }
@@ -296,6 +329,10 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         case GT:
         case LE:
         case GE:
+            // booleans are ordered too (false < true): real models write "charging > false"
+            if (l.kind == ExprType.Kind.BOOLEAN && r.kind == ExprType.Kind.BOOLEAN) {
+                break;
+            }
             if (!l.isNumeric()) {
                 error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left());
             } else if (!r.isNumeric()) {
@@ -312,11 +349,19 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                 error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right());
             }
             break;
-        default:
+        case LOGICAL_AND:
+        case LOGICAL_OR:
             if (!l.isLogical()) {
                 error("'" + op + "' needs boolean or event operands, but the left one is " + l, e, R.getBinaryExpression_Left());
             } else if (!r.isLogical()) {
                 error("'" + op + "' needs boolean or event operands, but the right one is " + r, e, R.getBinaryExpression_Right());
+            }
+            break;
+        default: // event operators: or, and, ->
+            if (!l.isEventLike()) {
+                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l, e, R.getBinaryExpression_Left());
+            } else if (!r.isEventLike()) {
+                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r, e, R.getBinaryExpression_Right());
             }
         }
     }
@@ -346,9 +391,14 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                 error("'-' needs a number, not " + t, e, R.getUnaryExpression_Term());
             }
             break;
-        default:
+        case LOGICAL_NOT:
             if (!t.isLogical()) {
-                error("'" + e.getOperator().getLiteral() + "' needs a boolean or event operand, not " + t, e,
+                error("'!' needs a boolean or event operand, not " + t, e, R.getUnaryExpression_Term());
+            }
+            break;
+        default: // not, once
+            if (!t.isEventLike()) {
+                error("'" + e.getOperator().getLiteral() + "' needs an event, boolean or enum operand, not " + t, e,
                         R.getUnaryExpression_Term());
             }
         }
@@ -379,7 +429,8 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     @Check
     public void checkRepeat(RepeatExpression e) {
         if (e.getTimes() <= 0) {
-            error("repeat count must be positive, not " + e.getTimes(), e, R.getRepeatExpression_Times());
+            error("repeat count must be positive, not " + e.getTimes() + " (in '" + Names.ownerName(e) + "')", e,
+                    R.getRepeatExpression_Times());
         }
     }
 

@@ -80,4 +80,21 @@ public class ExamplesTest {
         BinaryExpression consequence = (BinaryExpression) rule.getImplies().get(0).getTerm();
         assertEquals("dock", ((EnumValue) consequence.getRight()).getLiteral().getName());
     }
+
+    @Test
+    public void hospitalDelivery() {
+        check("examples/hospital-delivery/hospital.roqme");
+        MironModel model = (MironModel) check("examples/hospital-delivery/hospital.miron").getContents().get(0);
+        assertEquals("HospitalDelivery", model.getNamespace());
+        assertEquals(7, model.getVariables().size());
+        assertEquals(5, model.getSentences().size());
+        VariationPoint inflation = (VariationPoint) model.getVariables().get(4);
+        BtBinding binding = (BtBinding) inflation.getBinding();
+        org.miron.dsl.bt.BtXPath.Result selected = org.miron.dsl.bt.BtXPath.evaluate(binding.getXpath(),
+                binding.getTargets().get(0));
+        assertEquals(2, selected.selections.size());
+        assertTrue(selected.selections.stream().allMatch(org.miron.dsl.bt.BtXPath.Selection::isAttribute));
+        Rule crowded = (Rule) model.getSentences().get(0);
+        assertEquals(3, crowded.getImplies().size());
+    }
 }

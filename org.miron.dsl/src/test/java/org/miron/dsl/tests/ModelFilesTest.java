@@ -41,7 +41,7 @@ public class ModelFilesTest {
         try (Stream<java.nio.file.Path> paths = Files.walk(base.toPath())) {
             return paths.map(java.nio.file.Path::toFile)
                     .filter(f -> f.getName().endsWith(".roqme") || f.getName().endsWith(".miron"))
-                    .filter(f -> !f.getPath().contains(File.separator + "lib" + File.separator))
+                    .filter(f -> f.getParentFile().getName().equals("valid") || f.getParentFile().getName().equals("invalid"))
                     .sorted()
                     .map(f -> new Object[] { base.toPath().relativize(f.toPath()).toString(), f })
                     .collect(Collectors.toList());

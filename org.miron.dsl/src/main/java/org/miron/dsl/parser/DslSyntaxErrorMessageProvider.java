@@ -1,0 +1,30 @@
+package org.miron.dsl.parser;
+
+import static org.eclipse.xtext.diagnostics.Diagnostic.SYNTAX_DIAGNOSTIC;
+
+import org.antlr.runtime.FailedPredicateException;
+import org.eclipse.xtext.nodemodel.SyntaxErrorMessage;
+import org.eclipse.xtext.parser.antlr.SyntaxErrorMessageProvider;
+
+/** Rewords the parser messages that would make no sense to a modeller. */
+public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
+
+    @Override
+    public SyntaxErrorMessage getSyntaxErrorMessage(IParserErrorContext context) {
+        if (context.getRecognitionException() instanceof FailedPredicateException) {
+            String rule = ((FailedPredicateException) context.getRecognitionException()).ruleName;
+            if (rule != null && rule.contains("ArchBinding")) {
+                return new SyntaxErrorMessage("an arch binding needs parameterSetRepository, parameterSet, component"
+                        + " and parameter, each exactly once (in any order)", SYNTAX_DIAGNOSTIC);
+            }
+        }
+        SyntaxErrorMessage message = super.getSyntaxErrorMessage(context);
+        String text = message.getMessage();
+        if (text != null && text.startsWith("missing EOF at ")) {
+            // the parser finished a complete element and cannot start another one here
+            return new SyntaxErrorMessage("unexpected " + text.substring("missing EOF at ".length())
+                    + ": the element before it is complete and no declaration starts here", SYNTAX_DIAGNOSTIC);
+        }
+        return message;
+    }
+}

@@ -1,0 +1,44 @@
+package org.miron.dsl.tests;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.io.File;
+import java.util.List;
+import java.util.stream.Collectors;
+
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.diagnostics.Severity;
+import org.eclipse.xtext.validation.Issue;
+import org.junit.Test;
+
+/**
+ * A .miron is checked together with what it imports: loading it loads its imports into the same
+ * resource set, and validating every loaded resource reports their errors with their own file,
+ * line and column, as `miron check` prints them.
+ */
+public class CrossFileTest {
+
+    @Test
+    public void errorsOfImportedFilesAreReported() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_broken.miron"));
+        List<String> errors = Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .map(Models::format).collect(Collectors.toList());
+        assertEquals(String.join("\n", errors), 2, errors.size());
+        assertTrue(errors.toString(), errors.contains(
+                "broken.roqme:3:25: error: empty range of 'level': lower bound 10 must be less than upper bound 5"));
+        assertTrue(errors.toString(), errors.contains(
+                "broken.roqme:4:22: error: reference of 'p' must be in [0,1], not 2"));
+    }
+
+    @Test
+    public void importedResourcesShareTheResourceSet() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_broken.miron"));
+        List<String> loaded = resource.getResourceSet().getResources().stream().map(r -> r.getURI().lastSegment())
+                .sorted().collect(Collectors.toList());
+        assertEquals(List.of("broken.roqme", "tree.bt", "uses_broken.miron"), loaded);
+        List<Issue> own = Models.validateAll(resource).stream()
+                .filter(i -> i.getUriToProblem().lastSegment().equals("uses_broken.miron")).collect(Collectors.toList());
+        assertEquals(List.of(), own);
+    }
+}
