@@ -4,7 +4,6 @@ import java.nio.file.Path
 import java.util.LinkedHashMap
 import java.util.LinkedHashSet
 import java.util.List
-import java.util.Map
 import java.util.Set
 import org.eclipse.emf.common.util.URI
 import org.eclipse.emf.ecore.EObject
@@ -15,11 +14,11 @@ import org.miron.bt.bt.BTModel
 import org.miron.bt.bt.BehaviorTree
 import org.miron.bt.bt.BtFactory
 import org.miron.bt.bt.ControlNode
+import org.miron.bt.bt.SubtreeNode
 import org.miron.bt.bt.Switch
 import org.miron.bt.bt.TreeNode
 import org.miron.bt.scoping.BtGlobalScopeProvider
 import org.miron.bt.util.BtTrees
-import org.miron.dsl.bt.BtXPath
 import org.miron.dsl.miron.BehaviorTreeLiteral
 import org.miron.dsl.miron.BtBinding
 import org.miron.dsl.miron.InsertionType
@@ -30,6 +29,8 @@ import org.miron.dsl.util.Imports
  * (docs/generators.md, "The woven behaviour tree"):
  *  - an enum varpoint becomes a Switch over {vp_sel} with one SubTreePlus per non-preset literal
  *    and a default child: the original target for `in`, AlwaysSuccess for `before`/`after`;
+ *    when `in` replaces a subtree call, each variant gets that call's port wiring (its attributes
+ *    but name), so a variant sees the same inputs as the nominal subtree;
  *    BehaviorTree.CPP 3 stops at Switch6, so more cases nest Switches through the default child;
  *  - `before`/`after` insert the Switch next to the target in its parent; where the parent takes
  *    exactly one child or counts its children (a tree, a decorator, a Switch) target and Switch
@@ -109,13 +110,15 @@ class BtWeaver {
 		}
 		if (binding.insertionType == InsertionType.IN) {
 			// The target moves inside the Switch as its default: park a placeholder there first.
+			// A variant replacing a subtree call takes over its port wiring (goal="{ward}"...).
+			val wiring = if (target instanceof SubtreeNode) target.attributes.filter[name != "name"].toList else #[]
 			val placeholder = leaf(factory.createAlwaysSuccess, "AlwaysSuccess")
-			val choice = switchFor(vp, cases, placeholder)
+			val choice = switchFor(vp, cases, wiring, placeholder)
 			EcoreUtil.replace(target, choice)
 			EcoreUtil.replace(placeholder, target)
 			return
 		}
-		val choice = switchFor(vp, cases, leaf(factory.createAlwaysSuccess, "AlwaysSuccess"))
+		val choice = switchFor(vp, cases, #[], leaf(factory.createAlwaysSuccess, "AlwaysSuccess"))
 		val before = binding.insertionType == InsertionType.BEFORE
 		val parent = target.eContainer
 		if (parent instanceof ControlNode && !(parent instanceof Switch)) {
@@ -137,16 +140,19 @@ class BtWeaver {
 	}
 
 	/** A Switch over the cases whose last child is fallback; nested when there are more than six. */
-	def private TreeNode switchFor(SampledVarpoint vp, List<BehaviorTreeLiteral> cases, TreeNode fallback) {
+	def private TreeNode switchFor(SampledVarpoint vp, List<BehaviorTreeLiteral> cases, List<Attribute> wiring,
+		TreeNode fallback) {
 		if (cases.size > MAX_CASES) {
 			// Leave at least two cases to the inner Switch: there is no Switch1.
 			val here = if(cases.size - MAX_CASES >= 2) MAX_CASES else cases.size - 2
-			return switchNode(vp, cases.subList(0, here), switchFor(vp, cases.subList(here, cases.size), fallback))
+			return switchNode(vp, cases.subList(0, here), wiring,
+				switchFor(vp, cases.subList(here, cases.size), wiring, fallback))
 		}
-		switchNode(vp, cases, fallback)
+		switchNode(vp, cases, wiring, fallback)
 	}
 
-	def private switchNode(SampledVarpoint vp, List<BehaviorTreeLiteral> cases, TreeNode fallback) {
+	def private switchNode(SampledVarpoint vp, List<BehaviorTreeLiteral> cases, List<Attribute> wiring,
+		TreeNode fallback) {
 		// A single case still needs a Switch2: its second case repeats the first, so it is never
 		// chosen (the first matching case wins), and its child is an AlwaysFailure.
 		val padded = cases.size == 1
@@ -160,7 +166,9 @@ class BtWeaver {
 			node.attributes += attribute("case_2", cases.head.name)
 		}
 		for (c : cases) {
-			node.nodes += subtree(c.reference)
+			val call = subtree(c.reference)
+			call.attributes += wiring.map[a|attribute(a.name, a.value)]
+			node.nodes += call
 		}
 		if (padded) {
 			node.nodes += leaf(factory.createAlwaysFailure, "AlwaysFailure")

@@ -1,5 +1,6 @@
 package org.miron.generator
 
+import org.eclipse.emf.ecore.EObject
 import java.math.BigDecimal
 import java.math.MathContext
 import java.math.RoundingMode
@@ -52,7 +53,7 @@ class DataSampler {
 
 	/** The tables of a varpoint, or null (after reporting why) when it cannot be sampled. */
 	def SampledVarpoint sample(VariationPoint vp) {
-		val type = Types.dataType(vp as VariationPoint)
+		val type = Types.dataType(vp as EObject)
 		switch type {
 			EnumType: sampleEnum(vp, type)
 			NumericType: sampleNumber(vp, type)

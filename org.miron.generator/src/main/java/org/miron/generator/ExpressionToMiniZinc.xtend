@@ -1,5 +1,6 @@
 package org.miron.generator
 
+import org.eclipse.emf.ecore.EObject
 import java.util.LinkedHashSet
 import java.util.List
 import java.util.Map
@@ -20,7 +21,6 @@ import org.miron.dsl.roqme.NumericValue
 import org.miron.dsl.roqme.Param
 import org.miron.dsl.roqme.Property
 import org.miron.dsl.roqme.UnaryExpression
-import org.miron.dsl.roqme.UnaryOperator
 import org.miron.dsl.roqme.VariableRef
 import org.miron.dsl.roqme.BooleanType
 import org.miron.dsl.roqme.EventType
@@ -120,7 +120,7 @@ class ExpressionToMiniZinc {
 			Property:
 				metric(v)
 			Context: {
-				val type = Types.dataType(v as Context)
+				val type = Types.dataType(v as EObject)
 				if (type instanceof TimeType || type === null) {
 					return unsupported(e, "context '" + v.name + "' of this type")
 				}
@@ -135,7 +135,7 @@ class ExpressionToMiniZinc {
 				}
 				m.varpoints += vp
 				if (vp.isEnum) vp.decision
-				else if (Types.dataType(v as VariationPoint) instanceof BooleanType) '''(«vp.decision» = 1)'''
+				else if (Types.dataType(v as EObject) instanceof BooleanType) '''(«vp.decision» = 1)'''
 				else '''«vp.x»[«vp.decision»]'''
 			}
 			Param: {
@@ -176,7 +176,7 @@ class ExpressionToMiniZinc {
 			val v = e.variable
 			if (v instanceof VariationPoint) {
 				val vp = varpoints.get(v)
-				if (vp !== null && !vp.isEnum && Types.dataType(v as VariationPoint) instanceof NumericType) {
+				if (vp !== null && !vp.isEnum && Types.dataType(v as EObject) instanceof NumericType) {
 					return vp
 				}
 			}
@@ -191,7 +191,7 @@ class ExpressionToMiniZinc {
 
 	/** The MiniZinc type of a context parameter (docs/io-json.md). */
 	def static String mznType(Context c) {
-		switch Types.dataType(c as Context) {
+		switch Types.dataType(c as EObject) {
 			BooleanType, EventType: "bool"
 			EnumType: "int"
 			default: "float"

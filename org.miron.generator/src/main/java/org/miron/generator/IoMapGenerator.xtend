@@ -1,5 +1,6 @@
 package org.miron.generator
 
+import org.eclipse.emf.ecore.EObject
 import java.util.List
 import org.miron.bt.bt.Attribute
 import org.miron.dsl.miron.ArchBinding
@@ -26,14 +27,15 @@ class IoMapGenerator {
 		  "dzn": «str(m.name + ".dzn")»,
 		  "tree": «if (m.tree === null) "null" else str(m.tree)»,
 		  "weights": «str(m.weights.id)»,
-		  "inputs": [«FOR i : inputs(m) SEPARATOR ','»
-		    «i»«ENDFOR»
-		  ],
-		  "varpoints": [«FOR vp : m.varpoints SEPARATOR ','»
-		    «varpoint(vp)»«ENDFOR»
-		  ]
+		  "inputs": «list(inputs(m))»,
+		  "varpoints": «list(m.varpoints.map[vp|varpoint(vp).toString])»
 		}
 	'''
+
+	/** One entry per line, so that diffs of regenerated maps stay readable. */
+	def private list(List<String> entries) {
+		if (entries.empty) "[]" else "[\n  " + entries.join(",\n  ") + "\n]" // re-indented by the template
+	}
 
 	def private List<String> inputs(AdaptationModel m) {
 		(m.properties.map[metric.toString] + m.contexts.map[context.toString]).toList
@@ -42,7 +44,7 @@ class IoMapGenerator {
 	def private metric(Property p) '''{ "kind": "metric", "namespace": «str(Names.namespace(p))», "name": «str(p.name)», "param": «str(Names.metric(p))», "type": "float", "initial": «Numbers.json(p.reference ?: 0.5)» }'''
 
 	def private context(Context c) {
-		val type = Types.dataType(c as Context)
+		val type = Types.dataType(c as EObject)
 		val roqmeType = switch type {
 			BooleanType: "boolean"
 			EventType: "event"
