@@ -6,7 +6,8 @@ import picocli.CommandLine.Command;
 /** The `miron` command: model checking, formatting and generation. */
 @Command(name = "miron", mixinStandardHelpOptions = true, version = "miron 0.1",
         description = "MIRoN toolchain: behaviour trees, RoQME and MIRoN models for self-adaptive robots.",
-        subcommands = { CheckCommand.class, FormatCommand.class, CommandLine.HelpCommand.class })
+        subcommands = { CheckCommand.class, FormatCommand.class, GenerateCommand.class,
+                CommandLine.HelpCommand.class })
 public class MironCli implements Runnable {
 
     @Override

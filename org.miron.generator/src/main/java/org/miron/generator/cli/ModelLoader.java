@@ -9,7 +9,11 @@ import java.util.TreeSet;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.util.LineAndColumn;
 import org.eclipse.xtext.resource.XtextResource;
 import org.eclipse.xtext.resource.XtextResourceFactory;
 import org.eclipse.xtext.resource.XtextResourceSet;
@@ -17,6 +21,7 @@ import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.Issue;
 import org.miron.bt.BtStandaloneSetup;
+import org.miron.dsl.MironStandaloneSetup;
 
 import com.google.inject.Injector;
 
@@ -26,14 +31,16 @@ import com.google.inject.Injector;
  */
 public class ModelLoader {
     /** Woven trees are written as name.ext.xml and are BT files too. */
-    private static final Set<String> EXTENSIONS = Set.of("bt", "xml");
+    private static final Set<String> EXTENSIONS = Set.of("bt", "xml", "roqme", "miron");
 
     private final XtextResourceSet resourceSet;
     private final Path workingDir = Path.of("").toAbsolutePath();
 
     public ModelLoader() {
+        // MIRoN's set-up also registers RoQME and BT: a .miron model loads what it imports.
+        Injector miron = MironStandaloneSetup.doSetup();
         Injector bt = BtStandaloneSetup.doSetup();
-        resourceSet = bt.getInstance(XtextResourceSet.class);
+        resourceSet = miron.getInstance(XtextResourceSet.class);
         resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap()
                 .put("xml", bt.getInstance(XtextResourceFactory.class));
     }
@@ -44,7 +51,7 @@ public class ModelLoader {
     }
 
     public static String supportedExtensions() {
-        return ".bt (or a woven .xml)";
+        return ".bt (or a woven .xml), .roqme or .miron";
     }
 
     public XtextResourceSet resourceSet() {
@@ -82,6 +89,18 @@ public class ModelLoader {
             }
         }
         return new ArrayList<>(diagnostics);
+    }
+
+    /** A problem found by a generator, positioned at the model element it is about. */
+    public Diagnostic error(EObject element, String message) {
+        Resource resource = element == null ? null : element.eResource();
+        String file = resource == null ? "?" : displayPath(resource.getURI());
+        ICompositeNode node = NodeModelUtils.findActualNodeFor(element);
+        if (node == null) {
+            return new Diagnostic(file, 0, 0, Diagnostic.Severity.ERROR, message);
+        }
+        LineAndColumn position = NodeModelUtils.getLineAndColumn(node, node.getOffset());
+        return new Diagnostic(file, position.getLine(), position.getColumn(), Diagnostic.Severity.ERROR, message);
     }
 
     private static int number(Integer value) {

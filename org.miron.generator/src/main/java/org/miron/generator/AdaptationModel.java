@@ -1,0 +1,48 @@
+package org.miron.generator;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
+import org.miron.dsl.miron.MironModel;
+import org.miron.dsl.miron.Rule;
+import org.miron.dsl.roqme.Context;
+import org.miron.dsl.roqme.Property;
+
+/**
+ * A MIRoN model analysed for generation: sampled varpoints, rules already in MiniZinc, and the
+ * properties and contexts the generated model reads (its engine-fed parameters).
+ */
+public final class AdaptationModel {
+    /** One consequence of a rule: a constraint on varpoints, guarded by their overrides. */
+    public record Consequence(String constraint, Set<SampledVarpoint> varpoints) {
+    }
+
+    /** A rule in MiniZinc. */
+    public record TranslatedRule(Rule rule, String source, String condition, Set<Context> contexts,
+            List<Consequence> consequences) {
+    }
+
+    public final MironModel model;
+    /** Base name of the outputs: name.mzn, name.dzn, name.io.json, name.ext.xml. */
+    public final String name;
+    public final WeightPolicy weights;
+    public final List<SampledVarpoint> varpoints = new ArrayList<>();
+    public final List<TranslatedRule> rules = new ArrayList<>();
+    public final Set<Property> properties = new LinkedHashSet<>();
+    public final Set<Context> contexts = new LinkedHashSet<>();
+    /** File name of the woven tree, or null when the model weaves no behaviour tree. */
+    public String tree;
+
+    public AdaptationModel(MironModel model, String name, WeightPolicy weights) {
+        this.model = model;
+        this.name = name;
+        this.weights = weights;
+    }
+
+    /** True when some varpoint declares an impact: the model optimises, else it only satisfies. */
+    public boolean hasImpacts() {
+        return varpoints.stream().anyMatch(vp -> !vp.utilities.isEmpty());
+    }
+}

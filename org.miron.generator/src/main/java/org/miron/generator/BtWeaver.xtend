@@ -1,0 +1,298 @@
+package org.miron.generator
+
+import java.nio.file.Path
+import java.util.LinkedHashMap
+import java.util.LinkedHashSet
+import java.util.List
+import java.util.Set
+import org.eclipse.emf.common.util.URI
+import org.eclipse.emf.ecore.EObject
+import org.eclipse.emf.ecore.resource.Resource
+import org.eclipse.emf.ecore.util.EcoreUtil
+import org.miron.bt.bt.Attribute
+import org.miron.bt.bt.BTModel
+import org.miron.bt.bt.BehaviorTree
+import org.miron.bt.bt.BtFactory
+import org.miron.bt.bt.ControlNode
+import org.miron.bt.bt.SubtreeNode
+import org.miron.bt.bt.Switch
+import org.miron.bt.bt.TreeNode
+import org.miron.bt.scoping.BtGlobalScopeProvider
+import org.miron.bt.util.BtTrees
+import org.miron.dsl.miron.BehaviorTreeLiteral
+import org.miron.dsl.miron.BtBinding
+import org.miron.dsl.miron.InsertionType
+import org.miron.dsl.util.Imports
+
+/**
+ * Weaves the variation points bound to behaviour-tree nodes into a copy of the nominal tree
+ * (docs/generators.md, "The woven behaviour tree"):
+ *  - an enum varpoint becomes a Switch over {vp_sel} with one SubTreePlus per non-preset literal
+ *    and a default child: the original target for `in`, AlwaysSuccess for `before`/`after`;
+ *    when `in` replaces a subtree call, each variant gets that call's port wiring (its attributes
+ *    but name), so a variant sees the same inputs as the nominal subtree;
+ *    BehaviorTree.CPP 3 stops at Switch6, so more cases nest Switches through the default child;
+ *  - `before`/`after` insert the Switch next to the target in its parent; where the parent takes
+ *    exactly one child or counts its children (a tree, a decorator, a Switch) target and Switch
+ *    are wrapped in a Sequence instead, which keeps the tree loadable and the cases aligned;
+ *  - a numeric varpoint bound to an attribute replaces its value by the port {vp};
+ *  - the main tree's root is wrapped once in the monitoring Parallel whose Repeat ticks one
+ *    VariantAction per enum varpoint.
+ * Trees of other files stay there and are reached through includes relative to the output
+ * folder; only the files holding targets are copied into the woven tree.
+ */
+class BtWeaver {
+	/** BehaviorTree.CPP 3 registers Switch2..Switch6 only. */
+	public static val MAX_CASES = 6
+
+	val List<GenerationError> errors
+	val Path outputDir
+	val factory = BtFactory.eINSTANCE
+
+	new(List<GenerationError> errors, Path outputDir) {
+		this.errors = errors
+		this.outputDir = outputDir.toAbsolutePath.normalize
+	}
+
+	/** The woven tree, or null when the model imports no behaviour tree. */
+	def BTModel weave(AdaptationModel m) {
+		val btFiles = m.model.imports.map[imp|Imports.load(imp)].filterNull.filter[contents.head instanceof BTModel].toList
+		val bound = m.varpoints.filter[varpoint.binding instanceof BtBinding].toList
+		if (btFiles.empty) {
+			return null
+		}
+		// The nominal tree: the imported .bt that names a main tree, else the first one.
+		val primary = btFiles.findFirst[(contents.head as BTModel).main_tree_to_execute !== null] ?: btFiles.head
+		val targets = new LinkedHashMap<SampledVarpoint, List<EObject>>
+		val woven = new LinkedHashSet<Resource>
+		woven += primary
+		for (vp : bound) {
+			val selected = BindingTargets.select(vp, errors)
+			targets.put(vp, selected)
+			selected.forEach[woven += eResource]
+		}
+		val copier = new EcoreUtil.Copier
+		val copies = woven.map[copier.copy(contents.head) as BTModel].toList
+		copier.copyReferences
+
+		for (vp : bound) {
+			for (target : targets.get(vp)) {
+				val copy = copier.get(target)
+				switch copy {
+					Attribute: copy.value = "{" + (if (vp.isEnum) vp.selection else vp.name) + "}"
+					TreeNode: if (vp.isEnum) insert(vp, copy)
+				}
+			}
+		}
+
+		val out = factory.createBTModel
+		out.attributes += copies.head.attributes.toList
+		out.imports += includes(woven, bound).map[path|factory.createImport => [importURI = path]]
+		copies.forEach[out.trees += trees.toList]
+		out.nodesmodel = copies.head.nodesmodel
+		val monitored = bound.filter[isEnum].toList
+		if (!monitored.empty) {
+			monitor(out, monitored, m)
+			if (out.nodesmodel !== null) {
+				out.nodesmodel.content = declareVariantAction(out.nodesmodel.content)
+			}
+		}
+		out
+	}
+
+	// ------------------------------------------------------------------ Switch insertion
+
+	def private insert(SampledVarpoint vp, TreeNode target) {
+		val binding = vp.varpoint.binding as BtBinding
+		val cases = vp.literals.filter(BehaviorTreeLiteral).filter[!preset && reference !== null].toList
+		if (cases.empty) {
+			return // only the preset: the nominal behaviour needs no Switch
+		}
+		if (binding.insertionType == InsertionType.IN) {
+			// The target moves inside the Switch as its default: park a placeholder there first.
+			// A variant replacing a subtree call takes over its port wiring (goal="{ward}"...).
+			val wiring = if (target instanceof SubtreeNode) target.attributes.filter[name != "name"].toList else #[]
+			val placeholder = leaf(factory.createAlwaysSuccess, "AlwaysSuccess")
+			val choice = switchFor(vp, cases, wiring, placeholder)
+			EcoreUtil.replace(target, choice)
+			EcoreUtil.replace(placeholder, target)
+			return
+		}
+		val choice = switchFor(vp, cases, #[], leaf(factory.createAlwaysSuccess, "AlwaysSuccess"))
+		val before = binding.insertionType == InsertionType.BEFORE
+		val parent = target.eContainer
+		if (parent instanceof ControlNode && !(parent instanceof Switch)) {
+			val nodes = (parent as ControlNode).nodes
+			val index = nodes.indexOf(target)
+			nodes.add(if(before) index else index + 1, choice)
+		} else {
+			val sequence = factory.createSequence
+			sequence.tag = "Sequence"
+			EcoreUtil.replace(target, sequence)
+			if (before) {
+				sequence.nodes += choice
+				sequence.nodes += target
+			} else {
+				sequence.nodes += target
+				sequence.nodes += choice
+			}
+		}
+	}
+
+	/** A Switch over the cases whose last child is fallback; nested when there are more than six. */
+	def private TreeNode switchFor(SampledVarpoint vp, List<BehaviorTreeLiteral> cases, List<Attribute> wiring,
+		TreeNode fallback) {
+		if (cases.size > MAX_CASES) {
+			// Leave at least two cases to the inner Switch: there is no Switch1.
+			val here = if(cases.size - MAX_CASES >= 2) MAX_CASES else cases.size - 2
+			return switchNode(vp, cases.subList(0, here), wiring,
+				switchFor(vp, cases.subList(here, cases.size), wiring, fallback))
+		}
+		switchNode(vp, cases, wiring, fallback)
+	}
+
+	def private switchNode(SampledVarpoint vp, List<BehaviorTreeLiteral> cases, List<Attribute> wiring,
+		TreeNode fallback) {
+		// A single case still needs a Switch2: its second case repeats the first, so it is never
+		// chosen (the first matching case wins), and its child is an AlwaysFailure.
+		val padded = cases.size == 1
+		val node = factory.createSwitch
+		node.tag = "Switch" + (if(padded) 2 else cases.size)
+		node.attributes += attribute("variable", "{" + vp.selection + "}")
+		for (i : 0 ..< cases.size) {
+			node.attributes += attribute("case_" + (i + 1), cases.get(i).name)
+		}
+		if (padded) {
+			node.attributes += attribute("case_2", cases.head.name)
+		}
+		for (c : cases) {
+			val call = subtree(c.reference)
+			call.attributes += wiring.map[a|attribute(a.name, a.value)]
+			node.nodes += call
+		}
+		if (padded) {
+			node.nodes += leaf(factory.createAlwaysFailure, "AlwaysFailure")
+		}
+		node.nodes += fallback
+		node
+	}
+
+	// ------------------------------------------------------------------ monitoring
+
+	def private monitor(BTModel out, List<SampledVarpoint> varpoints, AdaptationModel m) {
+		val mainName = out.main_tree_to_execute ?: out.trees.head?.name
+		val main = out.trees.findFirst[name == mainName]
+		if (main === null || main.nodes.empty) {
+			errors += new GenerationError(m.model.imports.head, '''cannot add the monitoring Parallel: the main tree '«mainName»' is not in the imported file itself''')
+			return
+		}
+		val actions = varpoints.map[vp|
+			val action = leaf(factory.createAction, "Action")
+			action.attributes += attribute("ID", "VariantAction")
+			action.attributes += attribute("varpoint", vp.name)
+			action.attributes += attribute("value", "{" + vp.selection + "}")
+			action as TreeNode
+		]
+		val repeat = factory.createRepeat
+		repeat.tag = "Repeat"
+		repeat.attributes += attribute("name", "monitoring_repeat")
+		repeat.attributes += attribute("num_cycles", "-1")
+		if (actions.size == 1) {
+			repeat.node = actions.head
+		} else {
+			// VariantAction stays RUNNING (it monitors): a Sequence would only ever tick the first,
+			// so several of them run side by side.
+			val all = factory.createParallel
+			all.tag = "Parallel"
+			all.attributes += attribute("name", "monitoring_variants")
+			all.attributes += attribute("success_threshold", String.valueOf(actions.size))
+			all.attributes += attribute("failure_threshold", "1")
+			all.nodes += actions
+			repeat.node = all
+		}
+		val parallel = factory.createParallel
+		parallel.tag = "Parallel"
+		parallel.attributes += attribute("name", "monitoring_parallel")
+		parallel.attributes += attribute("success_threshold", "1")
+		parallel.attributes += attribute("failure_threshold", "1")
+		val root = main.nodes.head
+		EcoreUtil.replace(root, parallel)
+		parallel.nodes += repeat
+		parallel.nodes += root
+	}
+
+	/** Adds VariantAction to the TreeNodesModel, for editors such as Groot. */
+	def static declareVariantAction(String content) {
+		val end = content.lastIndexOf("</TreeNodesModel>")
+		if (end < 0 || content.contains('"VariantAction"')) {
+			return content
+		}
+		val lineStart = content.lastIndexOf("\n", end) + 1
+		val indent = content.substring(lineStart, end)
+		val declaration = '<Action ID="VariantAction"><input_port name="varpoint"/><output_port name="value"/></Action>'
+		if (lineStart > 0 && indent.trim.empty) {
+			content.substring(0, lineStart) + indent + "  " + declaration + "\n" + content.substring(lineStart)
+		} else {
+			content.substring(0, end) + declaration + content.substring(end)
+		}
+	}
+
+	// ------------------------------------------------------------------ includes
+
+	/**
+	 * Includes of the woven tree, relative to the output folder: those of the copied files, then
+	 * the files of variant trees not reachable through them; never a copied file, never twice.
+	 */
+	def private List<String> includes(Set<Resource> woven, List<SampledVarpoint> bound) {
+		val uris = new LinkedHashSet<URI>
+		val wovenUris = woven.map[URI].toSet
+		for (r : woven) {
+			uris += BtGlobalScopeProvider.includesOf(r).filter[!wovenUris.contains(it)]
+		}
+		val reachable = new LinkedHashSet<URI>(wovenUris)
+		val resourceSet = woven.head.resourceSet
+		for (uri : uris) {
+			reachable += uri
+			val r = resourceSet.getResource(uri, true)
+			BtTrees.includedResources(r).forEach[reachable += URI]
+		}
+		for (vp : bound.filter[isEnum]) {
+			for (literal : vp.literals.filter(BehaviorTreeLiteral).filter[reference !== null && !reference.eIsProxy]) {
+				val r = literal.reference.eResource
+				if (!reachable.contains(r.URI)) {
+					uris += r.URI
+					reachable += r.URI
+					BtTrees.includedResources(r).forEach[reachable += URI]
+				}
+			}
+		}
+		uris.map[relative(it)].toList
+	}
+
+	def private relative(URI uri) {
+		val file = Path.of(uri.toFileString).toAbsolutePath.normalize
+		outputDir.relativize(file).toString.replace('\\', '/')
+	}
+
+	// ------------------------------------------------------------------ node factory
+
+	def private attribute(String name, String value) {
+		val a = factory.createAttribute
+		a.name = name
+		a.value = value
+		a
+	}
+
+	def private <T extends TreeNode> T leaf(T node, String tag) {
+		node.tag = tag
+		node
+	}
+
+	def private subtree(BehaviorTree tree) {
+		val node = factory.createSubtreePlus
+		node.tag = "SubTreePlus"
+		node.behaviorTree = tree
+		node
+	}
+
+}

@@ -1,0 +1,78 @@
+package org.miron.generator;
+
+import static org.junit.Assert.assertEquals;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.BeforeClass;
+import org.junit.ClassRule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.junit.runner.RunWith;
+import org.junit.runners.Parameterized;
+import org.junit.runners.Parameterized.Parameters;
+
+/**
+ * Golden files of the weaver, one per insertion case (src/test/resources/weaving): each
+ * expected tree was written by hand from docs/generators.md, and every woven tree must pass
+ * `miron check`.
+ */
+@RunWith(Parameterized.class)
+public class WeaverGoldenTest {
+    @ClassRule
+    public static TemporaryFolder temp = new TemporaryFolder();
+
+    private static Path models;
+    private static Path out;
+
+    @Parameters(name = "{0}")
+    public static List<String> cases() {
+        return List.of(
+                "in_middle",        // in: the target becomes the Switch's default child
+                "in_root",          // in: the root of the main tree, inside the monitoring Parallel
+                "in_wiring",        // in: a subtree call, whose port wiring the variants inherit
+                "before_first",     // before the first child; a single case pads a Switch2
+                "after_last",       // after the last child
+                "after_middle",     // after the second-to-last child
+                "before_tree_root", // before the root of a tree: wrapped in a Sequence
+                "after_decorated",  // after a decorator's only child: wrapped in a Sequence
+                "nested",           // 7 cases: Switch5 whose default is a Switch2
+                "include",          // a variant tree in another file: <include>, not copied
+                "port",             // numeric varpoint bound to an attribute: {speed}, no monitoring
+                "two");             // two enum varpoints: both monitored
+
+    }
+
+    private final String name;
+
+    public WeaverGoldenTest(String name) {
+        this.name = name;
+    }
+
+    @BeforeClass
+    public static void copyModels() throws IOException {
+        models = Cli.copyResources("weaving", temp.newFolder("models").toPath());
+        out = temp.getRoot().toPath().resolve("out");
+    }
+
+    @Test
+    public void wovenTreeIsTheExpectedOne() throws IOException {
+        Cli cli = new Cli();
+        int exit = cli.run("generate", models.resolve(name + ".miron").toString(), "-o", out.toString());
+        assertEquals(cli.out() + cli.err, 0, exit);
+        String expected = Files.readString(models.resolve("expected/" + name + ".ext.xml"));
+        assertEquals(expected, Files.readString(out.resolve(name + ".ext.xml")));
+    }
+
+    @Test
+    public void wovenTreePassesOurBtValidation() {
+        Cli generate = new Cli();
+        assertEquals(0, generate.run("generate", models.resolve(name + ".miron").toString(), "-o", out.toString()));
+        Cli check = new Cli();
+        int exit = check.run("check", out.resolve(name + ".ext.xml").toString());
+        assertEquals(check.out(), 0, exit);
+    }
+}
