@@ -27,6 +27,19 @@ public record Endpoints(String request, String skill, String skillEvents, String
         return new Endpoints(tcp(request), tcp(skill), tcp(skillEvents), tcp(busIn), tcp(busOut));
     }
 
+    /** Loopback endpoints on ports free right now: for a one-JVM run that must not clash with others. */
+    public static Endpoints freeLoopback() {
+        return loopback(freePort(), freePort(), freePort(), freePort(), freePort());
+    }
+
+    private static int freePort() {
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            return s.getLocalPort();
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
     private static String tcp(int port) {
         return "tcp://127.0.0.1:" + port;
     }

@@ -19,6 +19,6 @@ public final class Ports {
     }
 
     public static Endpoints endpoints() {
-        return Endpoints.loopback(free(), free(), free(), free(), free());
+        return Endpoints.freeLoopback();
     }
 }

@@ -1,6 +1,6 @@
 package org.miron.runtime.demo;
 
-import java.io.PrintStream;
+import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -34,12 +34,12 @@ public final class Demo {
     private final SkillTable skills;
     private final Path outDir;
     private final Endpoints endpoints;
-    private final PrintStream out;
+    private final PrintWriter out;
     private double timeScale = 1.0;
     private long settleMs = 1500;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
-            PrintStream out) {
+            PrintWriter out) {
         this.ioJson = ioJson;
         this.tree = tree;
         this.scenario = scenario;

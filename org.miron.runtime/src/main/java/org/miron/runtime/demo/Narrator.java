@@ -1,7 +1,7 @@
 package org.miron.runtime.demo;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import java.io.PrintStream;
+import java.io.PrintWriter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -19,11 +19,11 @@ import org.miron.runtime.executor.StatusListener;
  * engine decides and why, and which skills the robot runs: one line per event, time first.
  */
 final class Narrator implements StatusListener {
-    private final PrintStream out;
+    private final PrintWriter out;
     private final IoModel model;
     private volatile BusRecorder clock;
 
-    Narrator(PrintStream out, IoModel model) {
+    Narrator(PrintWriter out, IoModel model) {
         this.out = out;
         this.model = model;
     }

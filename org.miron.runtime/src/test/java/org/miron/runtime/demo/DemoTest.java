@@ -4,9 +4,8 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.node.NullNode;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -32,16 +31,16 @@ public class DemoTest {
     public void batteryAndSafetyDrivesAdaptationsThatAreToldAndReported() throws Exception {
         SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
         SkillTable.Entry hand = new SkillTable.Entry(100, "SUCCESS", NullNode.getInstance(), Json.object());
-        ByteArrayOutputStream console = new ByteArrayOutputStream();
+        StringWriter console = new StringWriter();
         Demo demo = new Demo(Path.of("src/test/resources/models/testbot.io.json"),
                 Path.of("src/test/resources/executor/intralogistics.ext.xml"),
                 Scenario.load(Path.of("src/test/resources/demo/short.scenario.json")),
                 new SkillTable(Map.of("navigate", move, "objectpick", hand, "objectdrop", hand)),
-                temp.getRoot().toPath(), Ports.endpoints(), new PrintStream(console, true, StandardCharsets.UTF_8));
+                temp.getRoot().toPath(), Ports.endpoints(), new PrintWriter(console, true));
 
         Demo.Result result = demo.run();
 
-        String told = console.toString(StandardCharsets.UTF_8);
+        String told = console.toString();
         assertTrue(told, told.contains("RoQME   power_autonomy = 0.2"));
         assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch)"));
         assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge"));
