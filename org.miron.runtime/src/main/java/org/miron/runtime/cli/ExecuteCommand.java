@@ -3,6 +3,7 @@ package org.miron.runtime.cli;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.time.ZoneId;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.miron.runtime.Endpoints;
@@ -28,6 +29,9 @@ public final class ExecuteCommand implements Callable<Integer> {
     @Option(names = "--period", paramLabel = "MS", description = "tick period in ms (default: ${DEFAULT-VALUE})")
     long periodMs = 100;
 
+    @Option(names = "--show-resets", description = "also trace the reset of finished nodes to IDLE")
+    boolean showResets;
+
     @Option(names = "--request", description = "broker ROUTER for skill requests (default: ${DEFAULT-VALUE})")
     String request = Endpoints.DEFAULT_REQUEST;
 
@@ -49,7 +53,7 @@ public final class ExecuteCommand implements Callable<Integer> {
         Endpoints endpoints = new Endpoints(request, Endpoints.DEFAULT_SKILL, skillEvents, busIn, busOut);
         try (LiveExecutor executor = new LiveExecutor(endpoints)) {
             try {
-                executor.build(treeFile, new ConsoleTracePrinter());
+                executor.build(treeFile, new ConsoleTracePrinter(System.out, ZoneId.systemDefault(), showResets));
             } catch (BtBuildException e) {
                 System.err.println("miron execute: error: " + e.getMessage());
                 return 2;
