@@ -378,7 +378,8 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                     + "', a literal of another enum (" + Types.typeOf(literalSide) + ")", e,
                     literalSide == e.getRight() ? R.getBinaryExpression_Right() : R.getBinaryExpression_Left());
         } else {
-            error("cannot compare " + l + " with " + r + " using '" + op + "'", e, R.getBinaryExpression_Right());
+            error("cannot compare '" + text(e.getLeft()) + "' (" + l + ") with '" + text(e.getRight()) + "' (" + r
+                    + ") using '" + op + "'", e, R.getBinaryExpression_Right());
         }
     }
 
