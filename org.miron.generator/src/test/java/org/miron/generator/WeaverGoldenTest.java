@@ -41,6 +41,7 @@ public class WeaverGoldenTest {
                 "after_decorated",  // after a decorator's only child: wrapped in a Sequence
                 "nested",           // 7 cases: Switch5 whose default is a Switch2
                 "include",          // a variant tree in another file: <include>, not copied
+                "include_twice",    // ... already included by the nominal tree: included once
                 "port",             // numeric varpoint bound to an attribute: {speed}, no monitoring
                 "two");             // two enum varpoints: both monitored
 
