@@ -39,6 +39,7 @@ class MironGenerator {
 		val name = model.eResource.URI.trimFileExtension.lastSegment
 		val m = new AdaptationModel(model, name, weights)
 		val models = mironModels(model)
+		m.models += models
 
 		val sampler = new DataSampler(errors)
 		val byElement = new LinkedHashMap<VariationPoint, SampledVarpoint>

@@ -30,7 +30,7 @@ public class PreferenceTest {
                 + "property safety\nproperty speed\n\n"
                 + "@varpoint v : number (0:1:10) { 2 affects safety+++, 6 affects { safety---, speed++ } }\n");
         out = temp.newFolder("out").toPath();
-        for (String model : new String[] { "in_middle", "port", "sampled" }) {
+        for (String model : new String[] { "in_middle", "port", "sampled", "split" }) {
             Cli cli = new Cli();
             assertEquals(cli.out(), 0, cli.run("generate", models.resolve(model + ".miron").toString(), "-o", out.toString()));
         }
@@ -67,6 +67,14 @@ public class PreferenceTest {
         // speed: the sample at 2 has no impact on speed (neutral), ++ = 500/6 at 6.
         assertEquals("v_y_speed = array1d(0..10, [\n  50.0, 50.0, 50.0, 58.333333, 66.666667, 75.0, 83.333333, 75.0, 66.666667, 58.333333,\n  50.0]);",
                 line(dzn, "v_y_speed"));
+    }
+
+    @Test
+    public void varpointsOfImportedMironModelsAreGeneratedToo() throws IOException {
+        MiniZinc mzn = new MiniZinc(out.resolve("split.io.json"));
+        assertEquals("nominal", mzn.value("v", mzn.solve(mzn.defaults())));
+        String tree = Files.readString(out.resolve("split.ext.xml"));
+        assertEquals(tree, true, tree.contains("<Switch2 variable=\"{v_sel}\" case_1=\"a\" case_2=\"b\">"));
     }
 
     private static String line(String text, String name) {
