@@ -56,6 +56,33 @@ public class GenerateCommandTest {
     }
 
     @Test
+    public void everyExampleSolvesForSeveralSituations() throws IOException {
+        for (Path model : examples()) {
+            Path out = temp.newFolder(base(model) + "-situations").toPath();
+            assertEquals(0, Cli.exit("generate", model.toString(), "-o", out.toString()));
+            MiniZinc mzn = new MiniZinc(out.resolve(base(model) + ".io.json"));
+            for (double level : new double[] { 0.05, 0.5, 0.95 }) {
+                for (boolean known : new boolean[] { false, true }) {
+                    com.fasterxml.jackson.databind.node.ObjectNode data = mzn.defaults();
+                    for (com.fasterxml.jackson.databind.JsonNode in : mzn.io.get("inputs")) {
+                        if (in.get("kind").asText().equals("metric")) {
+                            data.put(in.get("param").asText(), level);
+                        } else {
+                            data.put(in.get("known").asText(), known);
+                        }
+                    }
+                    Map<String, Integer> decisions = mzn.solve(data);
+                    for (com.fasterxml.jackson.databind.JsonNode vp : mzn.io.get("varpoints")) {
+                        Integer d = decisions.get(vp.get("decision").asText());
+                        assertTrue(model + " " + data + ": " + decisions,
+                                d != null && d >= 0 && d < vp.get("values").size());
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
     public void outputIsDeterministicAndRelative() throws IOException {
         for (Path model : examples()) {
             Path first = temp.newFolder(base(model) + "1").toPath();
