@@ -3,6 +3,7 @@ package org.miron.dsl.parser;
 import static org.eclipse.xtext.diagnostics.Diagnostic.SYNTAX_DIAGNOSTIC;
 
 import org.antlr.runtime.FailedPredicateException;
+import org.antlr.runtime.RecognitionException;
 import org.eclipse.xtext.nodemodel.SyntaxErrorMessage;
 import org.eclipse.xtext.parser.antlr.SyntaxErrorMessageProvider;
 
@@ -17,6 +18,13 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
                 return new SyntaxErrorMessage("an arch binding needs parameterSetRepository, parameterSet, component"
                         + " and parameter, each exactly once (in any order)", SYNTAX_DIAGNOSTIC);
             }
+        }
+        RecognitionException e = context.getRecognitionException();
+        if (e != null && e.token != null && e.token.getText() != null && e.token.getText().startsWith("/**")) {
+            // documentation comments are tokens, not hidden: they belong to the next declaration
+            return new SyntaxErrorMessage("a documentation comment /** ... */ must come right before a declaration"
+                    + " (model header, import, type, context, param, var, timer, beliefvar, property, observation,"
+                    + " varpoint or rule); write /* ... */ for other comments", SYNTAX_DIAGNOSTIC);
         }
         SyntaxErrorMessage message = super.getSyntaxErrorMessage(context);
         String text = message.getMessage();
