@@ -25,6 +25,8 @@ public final class AdaptationModel {
     }
 
     public final MironModel model;
+    /** The model and the MIRoN models it imports (their varpoints and rules are generated too). */
+    public final List<MironModel> models = new ArrayList<>();
     /** Base name of the outputs: name.mzn, name.dzn, name.io.json, name.ext.xml. */
     public final String name;
     public final WeightPolicy weights;

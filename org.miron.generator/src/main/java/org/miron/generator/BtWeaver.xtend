@@ -56,10 +56,11 @@ class BtWeaver {
 
 	/** The woven tree, or null when the model imports no behaviour tree. */
 	def BTModel weave(AdaptationModel m) {
-		val btFiles = m.model.imports.map[imp|Imports.load(imp)].filterNull.filter[contents.head instanceof BTModel].toList
+		val btFiles = m.models.map[imports].flatten.map[imp|Imports.load(imp)].filterNull
+			.filter[contents.head instanceof BTModel].toSet.toList
 		val bound = m.varpoints.filter[varpoint.binding instanceof BtBinding].toList
 		if (btFiles.empty) {
-			return null
+			return null // nothing to weave into; BT bindings without a .bt import are validation errors
 		}
 		// The nominal tree: the imported .bt that names a main tree, else the first one.
 		val primary = btFiles.findFirst[(contents.head as BTModel).main_tree_to_execute !== null] ?: btFiles.head

@@ -21,7 +21,7 @@ class BtXmlPrinter {
 		// Plain concatenation: a rich string would re-indent the verbatim TreeNodesModel.
 		val out = new StringBuilder
 		out.append('<?xml version="1.0"?>\n')
-		out.append("<!-- " + comment + " -->\n")
+		out.append("<!-- " + comment.replace("--", "- -") + " -->\n") // "--" may not occur in a comment
 		out.append("<root" + attributes(m.attributes) + ">\n")
 		for (include : m.imports) {
 			out.append("  <include path=" + quote(include.importURI) + "/>\n")

@@ -103,7 +103,7 @@ class DataSampler {
 			else
 				newArrayList
 		val Double lo = type.lower ?: (if(samples.empty) null else samples.head.value.value)
-		val Double hi = type.upper ?: (if(samples.empty) null else samples.last.value.value)
+		val Double hi = type.upper ?: (if(samples.empty) null else samples.get(samples.size - 1).value.value)
 		if (lo === null || hi === null) {
 			errors += new GenerationError(vp, '''numeric varpoint '«vp.name»' needs a range (lo:hi) or samples to know which values it may take''')
 			return null
@@ -146,7 +146,7 @@ class DataSampler {
 				xs += sample.value.value
 				ys += utilityOf(sample, p)
 			}
-			if (samples.last.value.value < hi) {
+			if (samples.get(samples.size - 1).value.value < hi) {
 				xs += hi
 				ys += NEUTRAL
 			}
@@ -175,7 +175,7 @@ class DataSampler {
 				return ys.get(i - 1) + (ys.get(i) - ys.get(i - 1)) * (x - x0) / (x1 - x0)
 			}
 		}
-		ys.last
+		ys.get(ys.size - 1)
 	}
 
 	def private static double[] table(SampledVarpoint s, Property p) {

@@ -1,6 +1,7 @@
 package org.miron.generator
 
 import org.eclipse.emf.ecore.EObject
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils
 import java.util.LinkedHashSet
 import java.util.List
 import java.util.Map
@@ -61,13 +62,13 @@ class ExpressionToMiniZinc {
 			ConditionalExpression: '''(if «translate(e.condition, m)» then «translate(e.ifTrue, m)» else «translate(e.ifFalse, m)» endif)'''.toString
 			VariableRef: reference(e, m)
 			BeliefExpression:
-				if (e.belief instanceof Property) metric(e.belief as Property) else unsupported(e, "a belief other than a property")
+				if (e.belief instanceof Property) metric(e.belief as Property) else unsupported(e, "only properties have a MiniZinc parameter (metric_...)")
 			NumericValue: Numbers.mzn(e.value)
 			BooleanValue: String.valueOf(e.value)
 			EventValue: "true"
 			EnumValue: enumIndex(e)
 			FunctionCall: function(e, m).toString
-			default: unsupported(e, "this kind of expression")
+			default: unsupported(e, "rules may use numbers, booleans, enum literals, contexts, properties, varpoints, arithmetic, comparisons, and/or/not, ?: and abs/sqrt/exp/pow/min/max")
 		}
 	}
 
@@ -100,7 +101,7 @@ class ExpressionToMiniZinc {
 			default: null
 		}
 		if (symbol === null) {
-			return unsupported(e, "the event pattern '" + op.literal + "'")
+			return unsupported(e, "event patterns ('" + op.literal + "') belong in RoQME observations, not in rules")
 		}
 		'''(«translate(e.left, m)» «symbol» «translate(e.right, m)»)'''
 	}
@@ -109,8 +110,8 @@ class ExpressionToMiniZinc {
 		switch e.operator {
 			case NOT, case LOGICAL_NOT: '''(not «translate(e.term, m)»)'''
 			case MINUS: '''(-«translate(e.term, m)»)'''
-			case ONCE: unsupported(e, "'once' (an event pattern)")
-			default: unsupported(e, "'" + e.operator.literal + "'")
+			case ONCE: unsupported(e, "event patterns ('once') belong in RoQME observations, not in rules")
+			default: unsupported(e, "'" + e.operator.literal + "' has no MiniZinc translation")
 		}
 	}
 
@@ -122,7 +123,7 @@ class ExpressionToMiniZinc {
 			Context: {
 				val type = Types.dataType(v as EObject)
 				if (type instanceof TimeType || type === null) {
-					return unsupported(e, "context '" + v.name + "' of this type")
+					return unsupported(e, "context '" + v.name + "' has a type without MiniZinc parameter (time)")
 				}
 				contexts += v
 				m.contexts += v
@@ -131,7 +132,7 @@ class ExpressionToMiniZinc {
 			VariationPoint: {
 				val vp = varpoints.get(v)
 				if (vp === null) {
-					return unsupported(e, "varpoint '" + v.name + "' (it has no value table)")
+					return unsupported(e, "varpoint '" + v.name + "' has no value table")
 				}
 				m.varpoints += vp
 				if (vp.isEnum) vp.decision
@@ -140,10 +141,10 @@ class ExpressionToMiniZinc {
 			}
 			Param: {
 				val value = v.initializedTo
-				if (value === null) unsupported(e, "param '" + v.name + "' without a default value") else translate(value, m)
+				if (value === null) unsupported(e, "param '" + v.name + "' has no default value") else translate(value, m)
 			}
 			default:
-				unsupported(e, "'" + v?.name + "' (rules may read contexts, properties, params with a default and varpoints)")
+				unsupported(e, "rules may read contexts, properties, params with a default and varpoints; '" + v?.name + "' is none of them")
 		}
 	}
 
@@ -155,7 +156,7 @@ class ExpressionToMiniZinc {
 	def private enumIndex(EnumValue e) {
 		val literal = e.literal
 		val type = literal?.eContainer
-		if (type instanceof EnumType) String.valueOf(type.literals.indexOf(literal)) else unsupported(e, "this literal")
+		if (type instanceof EnumType) String.valueOf(type.literals.indexOf(literal)) else unsupported(e, "the literal does not belong to an enumeration")
 	}
 
 	def private function(FunctionCall e, Mentions m) {
@@ -165,7 +166,7 @@ class ExpressionToMiniZinc {
 			default: -1
 		}
 		if (arity != e.args.size) {
-			return unsupported(e, "the function " + e.function + "() with " + e.args.size + " argument(s)")
+			return unsupported(e, "rules may call abs, sqrt, exp (one argument), pow, min and max (two arguments)")
 		}
 		'''«e.function»(«FOR a : e.args SEPARATOR ', '»«translate(a, m)»«ENDFOR»)'''
 	}
@@ -184,8 +185,10 @@ class ExpressionToMiniZinc {
 		null
 	}
 
-	def private unsupported(Expression e, String what) {
-		errors += new GenerationError(e, '''cannot translate «what» to MiniZinc: rules may use numbers, booleans, enum literals, arithmetic, comparisons, and/or/not, ?: and abs/sqrt/exp/pow/min/max''')
+	def private unsupported(Expression e, String reason) {
+		val node = NodeModelUtils.findActualNodeFor(e)
+		val text = if(node === null) "" else NodeModelUtils.getTokenText(node)
+		errors += new GenerationError(e, "cannot generate MiniZinc for '" + text + "': " + reason)
 		"false"
 	}
 

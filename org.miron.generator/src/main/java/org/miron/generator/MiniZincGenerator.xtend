@@ -88,8 +88,10 @@ class MiniZincGenerator {
 	}
 
 	def private objective(AdaptationModel m) '''
-		% Objective: weighted utility, then the tie-break towards preset and current values (see the
-		% generator's documentation: one unit of gain, 0.01 weighted utility, outweighs every tie-break).
+		% Objective. miron_gain: per varpoint, round(100 * sum_p weight_p * utility_p) of its value (units of
+		% 0.01 weighted utility). miron_tie: per varpoint, 2 at its preset + 1 at its current value. The
+		% largest tie is below miron_tie_scale, so one unit of gain outweighs every tie-break, and equal
+		% gains go to the preset, then to the current value (no flapping when nothing changed).
 		«FOR p : m.properties.filter[p | m.varpoints.exists[utilities.containsKey(p)]]»
 			float: «Names.weight(p)» = «IF m.weights == WeightPolicy.NEED»1.0 - «ENDIF»«Names.metric(p)»;
 		«ENDFOR»

@@ -19,7 +19,7 @@ import org.miron.dsl.util.Imports
  * are no errors, so a model that cannot be generated leaves no partial output.
  */
 class MironGenerator {
-	public static class Result {
+	static class Result {
 		/** File name → content, in a fixed order. */
 		public val Map<String, String> files = new LinkedHashMap
 		public val List<GenerationError> errors = newArrayList
@@ -39,6 +39,7 @@ class MironGenerator {
 		val name = model.eResource.URI.trimFileExtension.lastSegment
 		val m = new AdaptationModel(model, name, weights)
 		val models = mironModels(model)
+		m.models += models
 
 		val sampler = new DataSampler(errors)
 		val byElement = new LinkedHashMap<VariationPoint, SampledVarpoint>

@@ -102,8 +102,12 @@ final class MiniZinc {
             assertEquals("minizinc failed: " + new String(stderr, StandardCharsets.UTF_8) + text, 0, process.exitValue());
             assertTrue("no solution (" + text + ") for " + data, text.contains("----------"));
             // With solve maximize, the last solution printed is the best one.
-            String[] solutions = text.split("----------");
-            String last = solutions[solutions.length - (text.trim().endsWith("==========") ? 2 : 1)].trim();
+            String last = "";
+            for (String chunk : text.split("----------")) {
+                if (!chunk.isBlank() && !chunk.trim().startsWith("==========")) {
+                    last = chunk.trim();
+                }
+            }
             JsonNode solution = JSON.readTree(last);
             Map<String, Integer> result = new LinkedHashMap<>();
             solution.fields().forEachRemaining(e -> result.put(e.getKey(), e.getValue().asInt()));

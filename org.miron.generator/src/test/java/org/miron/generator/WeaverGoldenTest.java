@@ -31,17 +31,25 @@ public class WeaverGoldenTest {
     @Parameters(name = "{0}")
     public static List<String> cases() {
         return List.of(
-                "in_middle",        // in: the target becomes the Switch's default child
+                "in_first",         // in: the target becomes the Switch's default child
+                "in_middle",
+                "in_last",
                 "in_root",          // in: the root of the main tree, inside the monitoring Parallel
                 "in_wiring",        // in: a subtree call, whose port wiring the variants inherit
                 "before_first",     // before the first child; a single case pads a Switch2
+                "before_middle",
+                "before_last",      // before the last child
+                "after_first",
                 "after_last",       // after the last child
                 "after_middle",     // after the second-to-last child
                 "before_tree_root", // before the root of a tree: wrapped in a Sequence
+                "after_tree_root",
                 "after_decorated",  // after a decorator's only child: wrapped in a Sequence
                 "nested",           // 7 cases: Switch5 whose default is a Switch2
                 "include",          // a variant tree in another file: <include>, not copied
+                "include_twice",    // ... already included by the nominal tree: included once
                 "port",             // numeric varpoint bound to an attribute: {speed}, no monitoring
+                "two_targets",      // one varpoint, two targets: a Switch at each
                 "two");             // two enum varpoints: both monitored
 
     }

@@ -7,7 +7,6 @@ import java.util.List;
 import javax.xml.XMLConstants;
 import javax.xml.parsers.DocumentBuilder;
 import javax.xml.parsers.DocumentBuilderFactory;
-import javax.xml.xpath.XPath;
 import javax.xml.xpath.XPathConstants;
 import javax.xml.xpath.XPathExpression;
 import javax.xml.xpath.XPathExpressionException;
@@ -98,14 +97,20 @@ public final class BtXPath {
             result.error = "cannot locate the target node in " + resource.getURI().lastSegment();
             return result;
         }
-        NodeList nodes;
+        XPathExpression compiled;
         try {
-            XPath xp = XPathFactory.newInstance().newXPath();
-            XPathExpression compiled = xp.compile(xpath);
-            nodes = (NodeList) compiled.evaluate(context, XPathConstants.NODESET);
+            compiled = XPathFactory.newInstance().newXPath().compile(xpath);
         } catch (XPathExpressionException e) {
             Throwable cause = e.getCause() != null ? e.getCause() : e;
-            result.error = "invalid XPath '" + xpath + "': " + (cause.getMessage() == null ? "it does not select nodes" : cause.getMessage());
+            result.error = "invalid XPath '" + xpath + "': " + cause.getMessage();
+            return result;
+        }
+        NodeList nodes;
+        try {
+            nodes = (NodeList) compiled.evaluate(context, XPathConstants.NODESET);
+        } catch (XPathExpressionException e) {
+            // count(...), string(...) and the like compute a value instead of selecting nodes
+            result.error = "invalid XPath '" + xpath + "': it must select nodes or attributes, not compute a value";
             return result;
         }
         for (int i = 0; i < nodes.getLength(); i++) {

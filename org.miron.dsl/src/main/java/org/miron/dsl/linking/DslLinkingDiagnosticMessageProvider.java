@@ -1,36 +1,76 @@
 package org.miron.dsl.linking;
 
 import org.eclipse.emf.ecore.EClass;
-import org.eclipse.xtext.diagnostics.DiagnosticMessage;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.diagnostics.Diagnostic;
+import org.eclipse.xtext.diagnostics.DiagnosticMessage;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
+import org.eclipse.xtext.naming.IQualifiedNameConverter;
+import org.eclipse.xtext.naming.QualifiedName;
+import org.eclipse.xtext.resource.IEObjectDescription;
+import org.eclipse.xtext.scoping.IScopeProvider;
 import org.miron.bt.bt.BtPackage;
+import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.roqme.RoqmePackage;
+import org.miron.dsl.scoping.RoqmeScopeProvider;
 
-/** Unresolved references, named in the user's terms and with a hint on how names are written. */
+import com.google.inject.Inject;
+
+/**
+ * Unresolved references, named in the user's terms: what kind of element was expected, what the
+ * name denotes instead when it exists with another kind, and how imported names are written.
+ */
 public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
+
+    @Inject
+    private IScopeProvider scopeProvider;
+
+    @Inject
+    private IQualifiedNameConverter nameConverter;
 
     @Override
     public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
         EClass type = context.getReference().getEReferenceType();
-        String what = describe(type);
-        String hint = "";
-        if (type == RoqmePackage.Literals.ENUM_LITERAL) {
-            hint = " (write Type::LITERAL, variable::literal, or alias::Type::LITERAL for an imported one)";
-        } else if (context.getLinkText().indexOf('.') < 0) {
-            hint = " (elements of an imported file are written alias.name)";
+        String text = context.getLinkText();
+        String message = "unknown " + describe(type) + " '" + text + "'" + hint(context.getContext(), type, text);
+        return new DiagnosticMessage(message, Severity.ERROR, Diagnostic.LINKING_DIAGNOSTIC);
+    }
+
+    private String hint(EObject context, EClass type, String text) {
+        // the name exists, but denotes an element of another kind
+        QualifiedName name = nameConverter.toQualifiedName(text);
+        if (scopeProvider instanceof RoqmeScopeProvider) {
+            for (IEObjectDescription d : ((RoqmeScopeProvider) scopeProvider).visible(context.eResource())) {
+                if (d.getName().equals(name)) {
+                    String found = d.getEClass() == RoqmePackage.Literals.BELIEF_VARIABLE ? "belief" : describe(d.getEClass());
+                    return ": it is " + article(found) + ", not " + article(describe(type));
+                }
+            }
         }
-        return new DiagnosticMessage("unknown " + what + " '" + context.getLinkText() + "'" + hint,
-                Severity.ERROR, Diagnostic.LINKING_DIAGNOSTIC);
+        if (type == RoqmePackage.Literals.ENUM_LITERAL) {
+            return " (write Type::LITERAL, variable::literal, or alias::Type::LITERAL for an imported one)";
+        }
+        EObject root = context.eResource() == null || context.eResource().getContents().isEmpty() ? null
+                : context.eResource().getContents().get(0);
+        if (text.indexOf('.') < 0 && root instanceof RoqmeModel && !((RoqmeModel) root).getImports().isEmpty()) {
+            return " (elements of an imported file are written with its alias or namespace: x." + text + ")";
+        }
+        return "";
+    }
+
+    private static String article(String what) {
+        return ("aeiou".indexOf(what.charAt(0)) >= 0 ? "an " : "a ") + what;
     }
 
     private static String describe(EClass type) {
         if (type == BtPackage.Literals.BEHAVIOR_TREE) {
             return "behavior tree";
-        } else if (type == BtPackage.Literals.TREE_NODE) {
+        } else if (BtPackage.Literals.TREE_NODE.isSuperTypeOf(type)) {
             return "behavior tree node";
-        } else if (type == RoqmePackage.Literals.ENUM_LITERAL) {
+        } else if (type == BtPackage.Literals.ATTRIBUTE) {
+            return "behavior tree attribute";
+        } else if (RoqmePackage.Literals.ENUM_LITERAL.isSuperTypeOf(type)) {
             return "enum literal";
         } else if (type == RoqmePackage.Literals.TYPE_DEFINITION) {
             return "type";
@@ -40,6 +80,18 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
             return "property";
         } else if (type == RoqmePackage.Literals.TIMER) {
             return "timer";
+        } else if (type == RoqmePackage.Literals.CONTEXT) {
+            return "context";
+        } else if (type == RoqmePackage.Literals.PARAM) {
+            return "param";
+        } else if (type == RoqmePackage.Literals.VAR) {
+            return "var";
+        } else if (type == RoqmePackage.Literals.OBSERVATION) {
+            return "observation";
+        } else if ("VariationPoint".equals(type.getName())) {
+            return "varpoint";
+        } else if ("Rule".equals(type.getName())) {
+            return "rule";
         }
         return "variable";
     }

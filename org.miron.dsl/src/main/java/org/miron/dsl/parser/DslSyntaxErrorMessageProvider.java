@@ -3,6 +3,7 @@ package org.miron.dsl.parser;
 import static org.eclipse.xtext.diagnostics.Diagnostic.SYNTAX_DIAGNOSTIC;
 
 import org.antlr.runtime.FailedPredicateException;
+import org.antlr.runtime.RecognitionException;
 import org.eclipse.xtext.nodemodel.SyntaxErrorMessage;
 import org.eclipse.xtext.parser.antlr.SyntaxErrorMessageProvider;
 
@@ -18,13 +19,47 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
                         + " and parameter, each exactly once (in any order)", SYNTAX_DIAGNOSTIC);
             }
         }
+        RecognitionException e = context.getRecognitionException();
+        if (e != null && e.token != null && e.token.getText() != null && e.token.getText().startsWith("/**")) {
+            // documentation comments are tokens, not hidden: they belong to the next declaration
+            return new SyntaxErrorMessage("a documentation comment /** ... */ must come right before a declaration"
+                    + " (model header, import, type, context, param, var, timer, beliefvar, property, observation,"
+                    + " varpoint or rule); write /* ... */ for other comments", SYNTAX_DIAGNOSTIC);
+        }
         SyntaxErrorMessage message = super.getSyntaxErrorMessage(context);
-        String text = message.getMessage();
+        String text = readable(message.getMessage(), isKeyword(context));
         if (text != null && text.startsWith("missing EOF at ")) {
             // the parser finished a complete element and cannot start another one here
             return new SyntaxErrorMessage("unexpected " + text.substring("missing EOF at ".length())
                     + ": the element before it is complete and no declaration starts here", SYNTAX_DIAGNOSTIC);
         }
-        return message;
+        return text == null || text.equals(message.getMessage()) ? message
+                : new SyntaxErrorMessage(text, message.getIssueCode(), message.getIssueData());
+    }
+
+    /** Whether the offending token is a keyword (a word that is not an identifier). */
+    private static boolean isKeyword(IParserErrorContext context) {
+        RecognitionException e = context.getRecognitionException();
+        if (e == null || e.token == null || e.token.getText() == null || !e.token.getText().matches("[A-Za-z_]+")) {
+            return false;
+        }
+        String[] names = context.getTokenNames();
+        int type = e.token.getType();
+        return names == null || type < 0 || type >= names.length || !"RULE_ID".equals(names[type]);
+    }
+
+    /** Token names as a modeller knows them (RULE_ID is "a name"). */
+    private static String readable(String text, boolean keyword) {
+        if (text == null) {
+            return null;
+        }
+        String result = text.replace("RULE_ID", "a name").replace("RULE_STRING", "a \"string\"")
+                .replace("RULE_INT", "an integer").replace("RULE_REAL", "a decimal number")
+                .replace("RULE_DOC", "a documentation comment").replace("expecting EOF", "expecting the end of the file");
+        if (result.startsWith("no viable alternative at input ")) {
+            result = "unexpected " + result.substring("no viable alternative at input ".length())
+                    + (keyword ? " (a keyword: it cannot be used as a name)" : "");
+        }
+        return result;
     }
 }

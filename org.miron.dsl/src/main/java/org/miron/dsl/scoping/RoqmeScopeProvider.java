@@ -15,7 +15,7 @@ import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.resource.IResourceDescription;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.scoping.IScope;
-import org.eclipse.xtext.scoping.impl.SimpleScope;
+import org.eclipse.xtext.scoping.impl.MultimapBasedScope;
 import org.eclipse.xtext.util.IResourceScopeCache;
 import org.eclipse.xtext.util.Tuples;
 import org.miron.dsl.roqme.Import;
@@ -41,14 +41,21 @@ public class RoqmeScopeProvider extends AbstractRoqmeScopeProvider {
 
     @Override
     public IScope getScope(EObject context, EReference reference) {
-        EClass type = reference.getEReferenceType();
-        List<IEObjectDescription> matching = new ArrayList<>();
-        for (IEObjectDescription d : visible(context.eResource())) {
-            if (EcoreUtil2.isAssignableFrom(type, d.getEClass())) {
-                matching.add(d);
-            }
+        Resource resource = context.eResource();
+        if (resource == null) {
+            return IScope.NULLSCOPE;
         }
-        return new SimpleScope(IScope.NULLSCOPE, matching);
+        // one indexed scope per resource and target type: lookups stay constant-time in big models
+        EClass type = reference.getEReferenceType();
+        return cache.get(Tuples.pair(RoqmeScopeProvider.class, type), resource, () -> {
+            List<IEObjectDescription> matching = new ArrayList<>();
+            for (IEObjectDescription d : visible(resource)) {
+                if (EcoreUtil2.isAssignableFrom(type, d.getEClass())) {
+                    matching.add(d);
+                }
+            }
+            return MultimapBasedScope.createScope(IScope.NULLSCOPE, matching, false);
+        });
     }
 
     /** All descriptions visible in a resource, computed once per resource state. */

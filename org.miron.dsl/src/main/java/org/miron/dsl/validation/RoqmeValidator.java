@@ -1,89 +1,50 @@
 package org.miron.dsl.validation;
 
-import java.util.HashMap;
-import java.util.LinkedHashSet;
+import static org.miron.dsl.validation.Texts.fmt;
+import static org.miron.dsl.validation.Texts.range;
+
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
-import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.EObject;
-import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.EStructuralFeature;
-import org.eclipse.emf.ecore.util.EcoreUtil;
-import org.eclipse.xtext.naming.IQualifiedNameConverter;
-import org.eclipse.xtext.naming.QualifiedName;
 import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.INode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
-import org.eclipse.xtext.resource.IEObjectDescription;
-import org.eclipse.xtext.scoping.IScopeProvider;
 import org.eclipse.xtext.validation.Check;
-import org.eclipse.xtext.validation.CheckType;
-import org.miron.dsl.naming.DslQualifiedNameProvider;
+import org.eclipse.xtext.validation.ComposedChecks;
 import org.miron.dsl.roqme.BeliefVariable;
-import org.miron.dsl.roqme.BinaryExpression;
-import org.miron.dsl.roqme.BoundedType;
-import org.miron.dsl.roqme.ConditionalExpression;
 import org.miron.dsl.roqme.Context;
 import org.miron.dsl.roqme.DataType;
-import org.miron.dsl.roqme.EnumLiteral;
-import org.miron.dsl.roqme.EnumType;
-import org.miron.dsl.roqme.EnumValue;
 import org.miron.dsl.roqme.EvidenceAction;
 import org.miron.dsl.roqme.Expression;
-import org.miron.dsl.roqme.FunctionCall;
 import org.miron.dsl.roqme.Import;
+import org.miron.dsl.roqme.BoundedType;
 import org.miron.dsl.roqme.NumericType;
 import org.miron.dsl.roqme.NumericValue;
 import org.miron.dsl.roqme.Observation;
 import org.miron.dsl.roqme.Param;
 import org.miron.dsl.roqme.Property;
-import org.miron.dsl.roqme.RangeExpression;
-import org.miron.dsl.roqme.RepeatExpression;
-import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.roqme.Sets;
 import org.miron.dsl.roqme.TimeValue;
 import org.miron.dsl.roqme.Timer;
 import org.miron.dsl.roqme.TypedVariable;
-import org.miron.dsl.roqme.UnaryExpression;
 import org.miron.dsl.roqme.Var;
-import org.miron.dsl.roqme.WhileExpression;
 import org.miron.dsl.util.ExprType;
 import org.miron.dsl.util.Imports;
 import org.miron.dsl.util.Names;
 import org.miron.dsl.util.Types;
 
-import com.google.inject.Inject;
-
 /**
- * RoQME's own checks: names, ranges, beliefs, imports, and the type checking of expressions.
- * MIRoN's validator extends this one, so every check here also runs on MIRoN models.
+ * RoQME's checks: imports, data types, definitions and defaults against declared types, beliefs,
+ * times, observations; names and expressions are checked by the composed check sets. MIRoN's
+ * validator extends this one, so every RoQME check also runs on MIRoN models.
  */
+@ComposedChecks(validators = { NamingChecks.class, ExpressionChecks.class })
 public class RoqmeValidator extends AbstractRoqmeValidator {
 
     private static final RoqmePackage R = RoqmePackage.eINSTANCE;
-    /** Allowed argument counts of the built-in functions: {min, max}. */
-    private static final Map<String, int[]> ARITY = new HashMap<>();
-    static {
-        for (String f : List.of("sqrt", "exp", "abs", "update", "period", "first", "last", "size", "isEmpty", "schedule")) {
-            ARITY.put(f, new int[] { 1, 1 });
-        }
-        for (String f : List.of("avg", "min", "max", "count", "sum", "decreasing", "increasing", "stable", "eventWhen")) {
-            ARITY.put(f, new int[] { 1, 2 });
-        }
-        for (String f : List.of("pow", "at", "includes")) {
-            ARITY.put(f, new int[] { 2, 2 });
-        }
-    }
-
-    @Inject
-    private IScopeProvider scopeProvider;
-
-    @Inject
-    private IQualifiedNameConverter nameConverter;
-
     /**
      * Elements with a syntax error inside are not checked: their model is incomplete, and a
      * check would only repeat the syntax error in confusing terms (a missing number reads as 0).
@@ -94,6 +55,12 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             return false;
         }
         return super.isResponsible(context, object);
+    }
+
+    @Override
+    protected void handleExceptionDuringValidation(Throwable t) {
+        CheckSet.rethrowIfStrict(t);
+        super.handleExceptionDuringValidation(t);
     }
 
     private static boolean hasSyntaxError(EObject object) {
@@ -107,62 +74,6 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             }
         }
         return false;
-    }
-
-    // ------------------------------------------------------------------ names
-
-    @Check
-    public void checkUniqueNames(RoqmeModel model) {
-        Map<String, EObject> seen = new HashMap<>();
-        for (EObject obj : model.eContents()) {
-            String name = DslQualifiedNameProvider.nameOf(obj);
-            if (name == null) {
-                continue;
-            }
-            EObject first = seen.putIfAbsent(name, obj);
-            if (first != null) {
-                error("duplicate name '" + name + "': already declared at line " + line(first),
-                        obj, obj.eClass().getEStructuralFeature("name"));
-            }
-        }
-    }
-
-    @Check
-    public void checkEnumLiterals(EnumType type) {
-        Set<String> seen = new LinkedHashSet<>();
-        for (EnumLiteral literal : type.getLiterals()) {
-            if (literal.getName() != null && !seen.add(literal.getName())) {
-                error("enum literal '" + literal.getName() + "' is repeated in " + Names.enumName(type),
-                        literal, R.getEnumLiteral_Name());
-            }
-        }
-    }
-
-    /** Every cross-reference whose name matches several elements (e.g. two imports exposing it). */
-    @Check(CheckType.NORMAL)
-    public void checkAmbiguousReferences(EObject obj) {
-        for (EReference ref : obj.eClass().getEAllReferences()) {
-            if (ref.isContainment() || ref.isContainer() || ref.isDerived() || ref.isTransient()) {
-                continue;
-            }
-            List<INode> nodes = NodeModelUtils.findNodesForFeature(obj, ref);
-            for (int i = 0; i < nodes.size(); i++) {
-                String text = NodeModelUtils.getTokenText(nodes.get(i));
-                QualifiedName name = nameConverter.toQualifiedName(text);
-                Set<URI> targets = new LinkedHashSet<>();
-                for (IEObjectDescription d : scopeProvider.getScope(obj, ref).getElements(name)) {
-                    targets.add(d.getEObjectURI());
-                }
-                if (targets.size() > 1) {
-                    StringBuilder where = new StringBuilder();
-                    for (URI uri : targets) {
-                        where.append(where.length() == 0 ? "" : ", ").append(uri.trimFragment().lastSegment());
-                    }
-                    error("ambiguous reference '" + text + "': " + targets.size() + " elements have this name (in "
-                            + where + "); import one of the files with an alias", obj, ref, ref.isMany() ? i : -1);
-                }
-            }
-        }
     }
 
     // ------------------------------------------------------------------ imports
@@ -306,176 +217,5 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             error("the pattern of observation '" + observation.getName() + "' must be boolean or an event, not " + t,
                     observation, R.getObservation_Pattern());
         }
-    }
-
-    @Check
-    public void checkEvidence(EvidenceAction action) {
-        // nothing beyond the linking of the belief and the survival time, checked elsewhere
-    }
-
-    // ------------------------------------------------------------------ expressions
-
-    @Check
-    public void checkBinary(BinaryExpression e) {
-        ExprType l = Types.typeOf(e.getLeft());
-        ExprType r = Types.typeOf(e.getRight());
-        String op = e.getOperator().getLiteral();
-        switch (e.getOperator()) {
-        case EQ:
-        case NE:
-            checkComparable(e, l, r, op);
-            break;
-        case LT:
-        case GT:
-        case LE:
-        case GE:
-            // booleans are ordered too (false < true): real models write "charging > false"
-            if (l.kind == ExprType.Kind.BOOLEAN && r.kind == ExprType.Kind.BOOLEAN) {
-                break;
-            }
-            if (!l.isNumeric()) {
-                error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left());
-            } else if (!r.isNumeric()) {
-                error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right());
-            }
-            break;
-        case PLUS:
-        case MINUS:
-        case TIMES:
-        case DIVIDE:
-            if (!l.isNumeric()) {
-                error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left());
-            } else if (!r.isNumeric()) {
-                error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right());
-            }
-            break;
-        case LOGICAL_AND:
-        case LOGICAL_OR:
-            if (!l.isLogical()) {
-                error("'" + op + "' needs boolean or event operands, but the left one is " + l, e, R.getBinaryExpression_Left());
-            } else if (!r.isLogical()) {
-                error("'" + op + "' needs boolean or event operands, but the right one is " + r, e, R.getBinaryExpression_Right());
-            }
-            break;
-        default: // event operators: or, and, ->
-            if (!l.isEventLike()) {
-                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l, e, R.getBinaryExpression_Left());
-            } else if (!r.isEventLike()) {
-                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r, e, R.getBinaryExpression_Right());
-            }
-        }
-    }
-
-    private void checkComparable(BinaryExpression e, ExprType l, ExprType r, String op) {
-        if (l.comparableWith(r)) {
-            return;
-        }
-        if (l.kind == ExprType.Kind.ENUM && r.kind == ExprType.Kind.ENUM) {
-            Expression literalSide = e.getRight() instanceof EnumValue ? e.getRight() : e.getLeft();
-            Expression other = literalSide == e.getRight() ? e.getLeft() : e.getRight();
-            String literal = literalSide instanceof EnumValue ? text(literalSide) : "value of " + Types.typeOf(literalSide);
-            error("cannot compare '" + text(other) + "' (" + Types.typeOf(other) + ") with '" + literal
-                    + "', a literal of another enum (" + Types.typeOf(literalSide) + ")", e,
-                    literalSide == e.getRight() ? R.getBinaryExpression_Right() : R.getBinaryExpression_Left());
-        } else {
-            error("cannot compare '" + text(e.getLeft()) + "' (" + l + ") with '" + text(e.getRight()) + "' (" + r
-                    + ") using '" + op + "'", e, R.getBinaryExpression_Right());
-        }
-    }
-
-    @Check
-    public void checkUnary(UnaryExpression e) {
-        ExprType t = Types.typeOf(e.getTerm());
-        switch (e.getOperator()) {
-        case MINUS:
-            if (!t.isNumeric()) {
-                error("'-' needs a number, not " + t, e, R.getUnaryExpression_Term());
-            }
-            break;
-        case LOGICAL_NOT:
-            if (!t.isLogical()) {
-                error("'!' needs a boolean or event operand, not " + t, e, R.getUnaryExpression_Term());
-            }
-            break;
-        default: // not, once
-            if (!t.isEventLike()) {
-                error("'" + e.getOperator().getLiteral() + "' needs an event, boolean or enum operand, not " + t, e,
-                        R.getUnaryExpression_Term());
-            }
-        }
-    }
-
-    @Check
-    public void checkConditional(ConditionalExpression e) {
-        ExprType c = Types.typeOf(e.getCondition());
-        if (!c.isLogical()) {
-            error("the condition of '?:' must be boolean, not " + c, e, R.getConditionalExpression_Condition());
-        }
-        ExprType a = Types.typeOf(e.getIfTrue());
-        ExprType b = Types.typeOf(e.getIfFalse());
-        if (!a.comparableWith(b)) {
-            error("both branches of '?:' must have the same type, not " + a + " and " + b, e,
-                    R.getConditionalExpression_IfFalse());
-        }
-    }
-
-    @Check
-    public void checkWhile(WhileExpression e) {
-        if (!Types.typeOf(e.getCondition()).isLogical()) {
-            error("the condition of 'while' must be boolean, not " + Types.typeOf(e.getCondition()), e,
-                    R.getWhileExpression_Condition());
-        }
-    }
-
-    @Check
-    public void checkRepeat(RepeatExpression e) {
-        if (e.getTimes() <= 0) {
-            error("repeat count must be positive, not " + e.getTimes() + " (in '" + Names.ownerName(e) + "')", e,
-                    R.getRepeatExpression_Times());
-        }
-    }
-
-    @Check
-    public void checkRange(RangeExpression e) {
-        if (e.getMin() > e.getMax()) {
-            error("range(" + e.getMin() + ", " + e.getMax() + ") is empty: the minimum exceeds the maximum", e,
-                    R.getRangeExpression_Min());
-        }
-    }
-
-    @Check
-    public void checkFunctionCall(FunctionCall call) {
-        int[] arity = ARITY.get(call.getFunction());
-        int n = call.getArgs().size();
-        if (arity != null && (n < arity[0] || n > arity[1])) {
-            String expected = arity[0] == arity[1] ? String.valueOf(arity[0]) : arity[0] + " or " + arity[1];
-            error("function '" + call.getFunction() + "' takes " + expected + " argument(s), not " + n, call,
-                    R.getFunctionCall_Function());
-        }
-    }
-
-    // ------------------------------------------------------------------ helpers
-
-    protected static String fmt(double d) {
-        return d == Math.rint(d) && Math.abs(d) < 1e15 ? String.valueOf((long) d) : String.valueOf(d);
-    }
-
-    protected static String range(org.miron.dsl.roqme.BoundedType t) {
-        return "(" + (t.getLower() == null ? "-inf" : fmt(t.getLower())) + ":"
-                + (t.getUpper() == null ? "+inf" : fmt(t.getUpper())) + ")";
-    }
-
-    /** The line of an element's name (not of its documentation comment). */
-    protected static int line(EObject obj) {
-        EStructuralFeature name = obj.eClass().getEStructuralFeature("name");
-        List<INode> nodes = name == null ? List.of() : NodeModelUtils.findNodesForFeature(obj, name);
-        INode node = nodes.isEmpty() ? NodeModelUtils.getNode(obj) : nodes.get(0);
-        return node == null ? 0 : node.getStartLine();
-    }
-
-    /** The source text of an element, for messages. */
-    protected static String text(EObject obj) {
-        INode node = NodeModelUtils.getNode(obj);
-        return node == null ? String.valueOf(EcoreUtil.getURI(obj)) : NodeModelUtils.getTokenText(node);
     }
 }

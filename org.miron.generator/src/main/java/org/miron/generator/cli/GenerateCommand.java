@@ -88,7 +88,15 @@ public class GenerateCommand implements Callable<Integer> {
             if (resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof MironModel)) {
                 continue;
             }
-            MironGenerator.Result result = new MironGenerator(policy, dir).generate((MironModel) resource.getContents().get(0));
+            MironGenerator.Result result;
+            try {
+                result = new MironGenerator(policy, dir).generate((MironModel) resource.getContents().get(0));
+            } catch (RuntimeException e) {
+                // A generator bug must still end in a clear message, never a stack trace.
+                errors.add(new Diagnostic(loader.displayPath(resource.getURI()), 0, 0, Diagnostic.Severity.ERROR,
+                        "internal error of the generator, please report it: " + e));
+                continue;
+            }
             for (GenerationError e : result.errors) {
                 errors.add(loader.error(e.source(), e.message()));
             }

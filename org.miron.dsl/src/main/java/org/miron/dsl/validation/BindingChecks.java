@@ -1,0 +1,86 @@
+package org.miron.dsl.validation;
+
+import java.util.List;
+
+import org.eclipse.xtext.nodemodel.INode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.validation.Check;
+import org.miron.bt.bt.TreeNode;
+import org.miron.dsl.bt.BtXPath;
+import org.miron.dsl.miron.ArchBinding;
+import org.miron.dsl.miron.BtBinding;
+import org.miron.dsl.miron.InsertionType;
+import org.miron.dsl.miron.MironPackage;
+import org.miron.dsl.miron.VariationPoint;
+import org.miron.dsl.roqme.DataType;
+import org.miron.dsl.roqme.EnumType;
+import org.miron.dsl.roqme.NumericType;
+import org.miron.dsl.util.Types;
+
+/**
+ * Bindings of variation points: enums cannot go to the architecture; a BT binding's XPath,
+ * evaluated on the imported .bt file, must select something, and what a numeric varpoint or a
+ * before/after insertion needs (attributes, tree nodes).
+ */
+public class BindingChecks extends CheckSet {
+
+    private static final MironPackage M = MironPackage.eINSTANCE;
+
+    @Check
+    public void checkArchBinding(ArchBinding binding) {
+        VariationPoint vp = (VariationPoint) binding.eContainer();
+        if (Types.dataType(vp) instanceof EnumType) {
+            error("enum varpoint '" + vp.getName() + "' cannot be bound to 'arch': only parameters (numbers, booleans) can;"
+                    + " bind it to a behavior tree node instead", vp, M.getVariationPoint_Binding());
+        }
+    }
+
+    @Check
+    public void checkBtBinding(BtBinding binding) {
+        VariationPoint vp = (VariationPoint) binding.eContainer();
+        DataType type = Types.dataType(vp);
+        boolean numeric = type instanceof NumericType;
+        if (binding.getXpath() == null) {
+            if (numeric) {
+                error("numeric varpoint '" + vp.getName() + "' must be bound to a BT node attribute (a port): add an XPath"
+                        + " selecting it, e.g. in \"@speed\" " + targetText(binding, 0), binding, M.getBtBinding_Targets(), 0);
+            }
+            return;
+        }
+        for (int i = 0; i < binding.getTargets().size(); i++) {
+            TreeNode target = binding.getTargets().get(i);
+            if (target == null || target.eIsProxy()) {
+                continue;
+            }
+            BtXPath.Result result = BtXPath.evaluate(binding.getXpath(), target);
+            if (result.error != null) {
+                error(result.error, binding, M.getBtBinding_Xpath());
+                return;
+            }
+            if (result.selections.isEmpty()) {
+                error("XPath '" + binding.getXpath() + "' selects nothing in " + targetText(binding, i)
+                        + " of " + target.eResource().getURI().lastSegment(), binding, M.getBtBinding_Xpath());
+                continue;
+            }
+            for (BtXPath.Selection s : result.selections) {
+                if (numeric && !s.isAttribute()) {
+                    error("numeric varpoint '" + vp.getName() + "' is bound to " + s.describe()
+                            + ", which is not an attribute: the XPath must select a port such as @" + "speed",
+                            binding, M.getBtBinding_Xpath());
+                    break;
+                } else if (binding.getInsertionType() != InsertionType.IN && !s.isTreeNode()) {
+                    error("varpoint '" + vp.getName() + "': '" + binding.getInsertionType().getLiteral()
+                            + "' needs tree nodes, but the XPath selects "
+                            + s.describe(), binding, M.getBtBinding_Xpath());
+                    break;
+                }
+            }
+        }
+    }
+
+    private String targetText(BtBinding binding, int index) {
+        List<INode> nodes = NodeModelUtils
+                .findNodesForFeature(binding, M.getBtBinding_Targets());
+        return index < nodes.size() ? NodeModelUtils.getTokenText(nodes.get(index)) : "the target";
+    }
+}
