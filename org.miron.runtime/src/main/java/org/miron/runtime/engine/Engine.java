@@ -52,11 +52,7 @@ public final class Engine implements AutoCloseable {
         } catch (IllegalArgumentException e) {
             throw new EngineStartException("invalid io.json: " + e.getMessage());
         }
-        if (!options.backend.equals("minizinc")) {
-            throw new EngineStartException("unknown backend '" + options.backend + "' (available: minizinc)");
-        }
-        return new Engine(model, new MiniZincBackend(model, options.minizinc, options.solver, options.timeLimitMs),
-                options);
+        return new Engine(model, Backends.create(options.backend, model, options), options);
     }
 
     public Engine start() throws EngineStartException {
@@ -198,7 +194,7 @@ public final class Engine implements AutoCloseable {
             String prefix = type.equals("bt") ? Topics.VARIANT_PREFIX : Topics.BLACKBOARD_PREFIX;
             bus.publish(prefix + vp.name(), Json.write(msg));
         } else if (type.equals("arch")) {
-            sender.submit(vp.name(), ParameterSender.changeParameter(vp.binding(), value.asDouble()));
+            sender.submit(vp.name(), ParameterSender.changeParameter(vp.binding(), value));
         }
     }
 

@@ -25,6 +25,7 @@ import org.zeromq.ZMQ;
  */
 public final class SkillInterfaceMock implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(SkillInterfaceMock.class.getName());
+    private static final int KEEP = 10_000; // history and results kept, oldest dropped first
 
     private record Running(long id, String name, long dueMillis, SkillTable.Entry entry) {
     }
@@ -147,6 +148,9 @@ public final class SkillInterfaceMock implements AutoCloseable {
                 values.deepCopy(), List.of(cmd.toString(), "COMMIT"), System.currentTimeMillis());
         synchronized (this) {
             history.add(change);
+            if (history.size() > KEEP) {
+                history.remove(0);
+            }
             committed.put(tag, change.values());
             notifyAll();
         }
@@ -187,6 +191,9 @@ public final class SkillInterfaceMock implements AutoCloseable {
         pub.send(Json.write(msg));
         synchronized (this) {
             results.add(msg);
+            if (results.size() > KEEP) {
+                results.remove(0);
+            }
             notifyAll();
         }
     }

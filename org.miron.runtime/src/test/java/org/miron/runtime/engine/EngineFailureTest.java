@@ -77,6 +77,18 @@ public class EngineFailureTest {
     }
 
     @Test
+    public void unknownBackendIsAClearStartupError() throws Exception {
+        EngineOptions o = f.options();
+        o.backend = "quantum";
+        try {
+            Engine.create(o);
+            fail("engine accepted an unknown backend");
+        } catch (EngineStartException e) {
+            assertTrue(e.getMessage(), e.getMessage().contains("unknown backend 'quantum' (available: minizinc"));
+        }
+    }
+
+    @Test
     public void timeoutKeepsLastGoodConfiguration() throws Exception {
         f.startInfrastructure().startSkills().startEngine(shortLimit());
         assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
