@@ -92,6 +92,7 @@ public class EngineFailureTest {
     public void timeoutKeepsLastGoodConfiguration() throws Exception {
         f.startInfrastructure().startSkills().startEngine(shortLimit());
         assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
+        f.syncInputs();
         injectAndRecover(() -> Files.writeString(f.mzn, goodModel + SLOW), "TIMEOUT", "timeout");
     }
 
@@ -122,6 +123,7 @@ public class EngineFailureTest {
         o.minizinc = wrapper.toString();
         f.startInfrastructure().startSkills().startEngine(o);
         assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
+        f.syncInputs();
         injectAndRecover(() -> Files.writeString(f.dir.resolve("crash"), ""), "ERROR", "error",
                 () -> Files.delete(f.dir.resolve("crash")));
     }
@@ -155,6 +157,7 @@ public class EngineFailureTest {
     @Test
     public void badInputIsCountedDroppedAndSurvived() throws Exception {
         f.startAll();
+        long solves = f.engine.status().get("solves");
         f.publish(Topics.ESTIMATE, "{not json");
         f.publish(Topics.CONTEXT, "[1,2,3]");
         f.publish("roqme.bogus", "{\"name\":\"safety\",\"value\":0.1}");
@@ -165,12 +168,13 @@ public class EngineFailureTest {
         f.publish(Topics.CONTEXT, "{\"name\":\"BatteryLevel\",\"namespace\":\"Intralogistics\",\"type\":\"number\",\"value\":true}");
         f.publish(Topics.CONTEXT, "{\"name\":\"Space\",\"namespace\":\"Intralogistics\",\"type\":\"enum\",\"value\":\"MEDIUM\"}");
         f.publish(Topics.OVERRIDE_PREFIX + "task", "{\"value\":\"fly\"}");
-        JsonNode status = f.awaitStatus(s -> s.path("counters").path("malformedInput").asLong() == 2
+        f.publish(Topics.ESTIMATE, ""); // no body at all
+        JsonNode status = f.awaitStatus(s -> s.path("counters").path("malformedInput").asLong() == 3
                 && s.path("counters").path("unknownInput").asLong() == 3
                 && s.path("counters").path("badTypeInput").asLong() == 5);
-        assertNotNull("all ten bad messages counted: " + last(f.probe), status);
+        assertNotNull("all eleven bad messages counted: " + last(f.probe), status);
         assertTrue(f.engine.isAlive());
-        assertEquals("no input reached the solver", 1, f.engine.status().get("solves"));
+        assertEquals("no input reached the solver", solves, f.engine.status().get("solves"));
         // still adapting
         f.publish(Topics.CONTEXT, "{\"name\":\"BatteryLevel\",\"namespace\":\"Intralogistics\",\"type\":\"number\",\"value\":3.5}");
         assertNotNull(f.awaitVariant("task", "dock"));
