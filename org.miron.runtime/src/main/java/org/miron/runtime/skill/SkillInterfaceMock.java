@@ -75,7 +75,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
             poller.register(rep, ZMQ.Poller.POLLIN);
             while (active) {
                 poller.poll(nextTimeout());
-                byte[] request; // read whatever the poller says: JeroMQ's poller can miss an edge
+                byte[] request; // the poll only paces the loop; non-blocking reads decide
                 while (active && (request = rep.recv(ZMQ.DONTWAIT)) != null) {
                     while (rep.hasReceiveMore()) {
                         rep.recv(); // REP strips the envelope; extra body frames are not expected
