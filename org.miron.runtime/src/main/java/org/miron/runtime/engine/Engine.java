@@ -33,6 +33,7 @@ public final class Engine implements AutoCloseable {
     private DecisionLog log;
     private Thread loop;
     private volatile boolean running;
+    private volatile long lastStatusNanos = System.nanoTime();
     private long seq;
 
     public Engine(IoModel model, SolverBackend backend, EngineOptions options) {
@@ -103,6 +104,7 @@ public final class Engine implements AutoCloseable {
             try {
                 InputState.Snapshot snap = state.awaitChange(seen, 200);
                 if (snap == null) {
+                    heartbeat();
                     continue;
                 }
                 seen = snap.version();
@@ -199,7 +201,15 @@ public final class Engine implements AutoCloseable {
     }
 
     private void publishStatus() {
+        lastStatusNanos = System.nanoTime();
         bus.publish(Topics.STATUS, Json.write(status.toJson(appliedValues)));
+    }
+
+    /** A quiet engine still shows it is alive. */
+    private void heartbeat() {
+        if (System.nanoTime() - lastStatusNanos >= options.statusIntervalMs * 1_000_000L) {
+            publishStatus();
+        }
     }
 
     /** Counters and last error (tests, diagnostics). */

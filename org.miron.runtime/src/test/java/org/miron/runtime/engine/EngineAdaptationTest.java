@@ -96,6 +96,14 @@ public class EngineAdaptationTest {
     }
 
     @Test
+    public void statusIsPublishedAsAHeartbeat() throws Exception {
+        long solves = f.engine.status().get("solves"); // quiet from now on: no more inputs
+        assertTrue("a status without a solve in between", poll(() -> f.probe.messages(Topics.STATUS).stream()
+                .filter(m -> m.body().path("counters").path("solves").asLong() == solves).count() >= 2));
+        assertEquals(solves, f.engine.status().get("solves"));
+    }
+
+    @Test
     public void decisionsAreLoggedAsJsonLines() throws Exception {
         f.estimate("power_autonomy", 0.2);
         assertNotNull(f.awaitVariant("task", "dock"));

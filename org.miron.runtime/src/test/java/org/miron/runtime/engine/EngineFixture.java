@@ -59,6 +59,7 @@ public final class EngineFixture implements AutoCloseable {
         o.ackTimeoutMs = 500;
         o.backoffMinMs = 100;
         o.backoffMaxMs = 400;
+        o.statusIntervalMs = 1000;
         return o;
     }
 
