@@ -111,21 +111,38 @@ public class EngineFailureTest {
         assertNotNull("the MiniZinc error message is reported", status);
     }
 
-    @Test
-    public void solverCrashKeepsLastGoodConfiguration() throws Exception {
-        // A wrapper that behaves like minizinc until the file "crash" exists, then dies by SIGSEGV.
+    /** A wrapper that behaves like minizinc until the file {@code trigger} exists, then runs {@code fault}. */
+    private EngineOptions wrapped(String trigger, String fault) throws Exception {
         Path wrapper = f.dir.resolve("minizinc-wrapper.sh");
         Files.writeString(wrapper, "#!/bin/sh\n"
-                + "if [ -e \"$(dirname \"$0\")/crash\" ]; then kill -SEGV $$; fi\n"
+                + "if [ -e \"$(dirname \"$0\")/" + trigger + "\" ]; then " + fault + "; fi\n"
                 + "exec minizinc \"$@\"\n");
         Files.setPosixFilePermissions(wrapper, PosixFilePermissions.fromString("rwxr-xr-x"));
-        EngineOptions o = f.options();
+        EngineOptions o = shortLimit();
         o.minizinc = wrapper.toString();
-        f.startInfrastructure().startSkills().startEngine(o);
+        return o;
+    }
+
+    @Test
+    public void solverCrashKeepsLastGoodConfiguration() throws Exception {
+        f.startInfrastructure().startSkills().startEngine(wrapped("crash", "kill -SEGV $$"));
         assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
         f.syncInputs();
         injectAndRecover(() -> Files.writeString(f.dir.resolve("crash"), ""), "ERROR", "error",
                 () -> Files.delete(f.dir.resolve("crash")));
+    }
+
+    @Test
+    public void hungSolverIsKilledByTheWatchdog() throws Exception {
+        // ignores its own time limit: the engine must kill it (and its child) after limit + grace
+        f.startInfrastructure().startSkills().startEngine(wrapped("hang", "sleep 120"));
+        assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
+        f.syncInputs();
+        injectAndRecover(() -> Files.writeString(f.dir.resolve("hang"), ""), "TIMEOUT", "timeout",
+                () -> Files.delete(f.dir.resolve("hang")));
+        JsonNode killed = f.probe.await(Topics.STATUS, s -> s.path("lastError").path("message").asText()
+                .startsWith("minizinc killed after"), EngineFixture.TIMEOUT);
+        assertNotNull("the watchdog, not minizinc, ended the solve", killed);
     }
 
     private interface Io {
