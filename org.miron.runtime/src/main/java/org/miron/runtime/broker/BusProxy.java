@@ -63,8 +63,8 @@ final class BusProxy implements Runnable {
             poller.register(xpub, ZMQ.Poller.POLLIN);
             while (running && !Thread.currentThread().isInterrupted()) {
                 poller.poll(50);
-                // Drain both sockets whatever the poller says: JeroMQ's poller can miss an edge
-                // (a subscription then waits for the next event), non-blocking reads cannot.
+                // The poll only paces the loop; non-blocking reads decide. A wake-up the poller
+                // misses then costs at most one poll interval, never a stuck message.
                 boolean busy = true;
                 while (busy && running) {
                     busy = forward() | subscription();

@@ -54,7 +54,7 @@ final class RequestProxy implements Runnable {
             poller.register(backend, ZMQ.Poller.POLLIN);
             while (running && !Thread.currentThread().isInterrupted()) {
                 poller.poll(50);
-                // Drain regardless of the poller's flags: JeroMQ's poller can miss an edge.
+                // The poll only paces the loop; non-blocking reads decide (robust to missed wake-ups).
                 boolean busy = true;
                 while (busy && running) {
                     busy = relay(frontend, backend, "skill interface not connected")

@@ -112,7 +112,7 @@ public final class BusClient implements AutoCloseable {
             }
             while (running) {
                 poller.poll(10);
-                // Read without trusting the poller's flags: JeroMQ's poller can miss an edge.
+                // The poll only paces the loop; non-blocking reads decide (robust to missed wake-ups).
                 byte[] sub;
                 while ((sub = out.recv(ZMQ.DONTWAIT)) != null) {
                     if (sub.length > 0 && sub[0] == 1) {

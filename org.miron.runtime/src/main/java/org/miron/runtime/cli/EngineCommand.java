@@ -32,6 +32,10 @@ public final class EngineCommand implements Callable<Integer> {
             description = "append-only JSON-lines decision log (default: ${DEFAULT-VALUE})")
     Path decisionLog = Path.of("miron-decisions.jsonl");
 
+    @Option(names = "--status-interval", paramLabel = "MS",
+            description = "re-publish miron.status at least this often (default: ${DEFAULT-VALUE})")
+    long statusInterval = 5000;
+
     @Option(names = "--bus-in", description = "broker XSUB to publish to (default: ${DEFAULT-VALUE})")
     String busIn = Endpoints.DEFAULT_BUS_IN;
 
@@ -49,6 +53,7 @@ public final class EngineCommand implements Callable<Integer> {
         o.solver = solver;
         o.timeLimitMs = timeLimit;
         o.decisionLog = decisionLog;
+        o.statusIntervalMs = statusInterval;
         o.busIn = busIn;
         o.busOut = busOut;
         o.request = request;

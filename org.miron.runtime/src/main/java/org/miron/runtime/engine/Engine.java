@@ -33,6 +33,7 @@ public final class Engine implements AutoCloseable {
     private DecisionLog log;
     private Thread loop;
     private volatile boolean running;
+    private volatile long lastStatusNanos = System.nanoTime();
     private long seq;
 
     public Engine(IoModel model, SolverBackend backend, EngineOptions options) {
@@ -52,11 +53,7 @@ public final class Engine implements AutoCloseable {
         } catch (IllegalArgumentException e) {
             throw new EngineStartException("invalid io.json: " + e.getMessage());
         }
-        if (!options.backend.equals("minizinc")) {
-            throw new EngineStartException("unknown backend '" + options.backend + "' (available: minizinc)");
-        }
-        return new Engine(model, new MiniZincBackend(model, options.minizinc, options.solver, options.timeLimitMs),
-                options);
+        return new Engine(model, Backends.create(options.backend, model, options), options);
     }
 
     public Engine start() throws EngineStartException {
@@ -107,6 +104,7 @@ public final class Engine implements AutoCloseable {
             try {
                 InputState.Snapshot snap = state.awaitChange(seen, 200);
                 if (snap == null) {
+                    heartbeat();
                     continue;
                 }
                 seen = snap.version();
@@ -198,12 +196,20 @@ public final class Engine implements AutoCloseable {
             String prefix = type.equals("bt") ? Topics.VARIANT_PREFIX : Topics.BLACKBOARD_PREFIX;
             bus.publish(prefix + vp.name(), Json.write(msg));
         } else if (type.equals("arch")) {
-            sender.submit(vp.name(), ParameterSender.changeParameter(vp.binding(), value.asDouble()));
+            sender.submit(vp.name(), ParameterSender.changeParameter(vp.binding(), value));
         }
     }
 
     private void publishStatus() {
+        lastStatusNanos = System.nanoTime();
         bus.publish(Topics.STATUS, Json.write(status.toJson(appliedValues)));
+    }
+
+    /** A quiet engine still shows it is alive. */
+    private void heartbeat() {
+        if (System.nanoTime() - lastStatusNanos >= options.statusIntervalMs * 1_000_000L) {
+            publishStatus();
+        }
     }
 
     /** Counters and last error (tests, diagnostics). */

@@ -18,6 +18,8 @@ public final class EngineOptions {
     public long ackTimeoutMs = 1000;
     public long backoffMinMs = 200;
     public long backoffMaxMs = 5000;
+    /** miron.status is also re-published this often when nothing happens (a heartbeat). */
+    public long statusIntervalMs = 5000;
 
     public EngineOptions(Path ioJson) {
         this.ioJson = ioJson;

@@ -83,10 +83,23 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         if (values.isEmpty()) {
             throw new IllegalArgumentException("varpoint " + name + " has no values");
         }
+        String kind = required(vp, "kind");
+        boolean numeric = kind.equals("number");
+        if (!numeric && !kind.equals("enum")) {
+            throw new IllegalArgumentException("varpoint " + name + " has kind '" + kind + "' (enum or number)");
+        }
+        for (JsonNode v : values) {
+            if (numeric ? !v.isNumber() : !v.isTextual()) {
+                throw new IllegalArgumentException("varpoint " + name + " (" + kind + ") has value " + v);
+            }
+        }
         Integer preset = vp.hasNonNull("preset") ? vp.get("preset").asInt() : null;
+        if (preset != null && (preset < 0 || preset >= values.size())) {
+            throw new IllegalArgumentException("varpoint " + name + " has preset " + preset + " outside its values");
+        }
         JsonNode b = vp.get("binding");
         Binding binding = b == null || b.isNull() ? null : new Binding(required(b, "type"), b);
-        return new VarPoint(name, required(vp, "kind"), List.copyOf(values), preset, required(vp, "decision"),
+        return new VarPoint(name, kind, List.copyOf(values), preset, required(vp, "decision"),
                 required(vp, "input"), required(vp, "inputValue"), required(vp, "current"), binding);
     }
 

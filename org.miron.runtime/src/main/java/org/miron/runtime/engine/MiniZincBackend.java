@@ -94,7 +94,7 @@ public final class MiniZincBackend implements SolverBackend {
         try {
             boolean done = p.waitFor(timeLimitMs + GRACE_MS, TimeUnit.MILLISECONDS);
             if (!done) {
-                p.destroyForcibly();
+                kill(p);
                 p.waitFor(2, TimeUnit.SECONDS);
                 return SolveResult.failed(SolveResult.Status.TIMEOUT,
                         "minizinc killed after " + (timeLimitMs + GRACE_MS) + " ms", millisSince(start));
@@ -102,7 +102,7 @@ public final class MiniZincBackend implements SolverBackend {
             outReader.join(2000);
             errReader.join(2000);
         } catch (InterruptedException e) {
-            p.destroyForcibly();
+            kill(p);
             Thread.currentThread().interrupt();
             return SolveResult.failed(SolveResult.Status.ERROR, "solve interrupted", millisSince(start));
         }
@@ -111,6 +111,12 @@ public final class MiniZincBackend implements SolverBackend {
             errTail = stderr.toString();
         }
         return output.result(model, p.exitValue(), errTail, millisSince(start));
+    }
+
+    /** minizinc runs the solver as a child process: kill the whole tree, not just minizinc. */
+    private static void kill(Process p) {
+        p.descendants().forEach(ProcessHandle::destroyForcibly);
+        p.destroyForcibly();
     }
 
     private static void appendTail(StringBuilder b, String line) {

@@ -1,5 +1,7 @@
 package org.miron.runtime.engine;
 
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.DoubleNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.concurrent.atomic.AtomicLong;
 import org.miron.runtime.Json;
@@ -28,8 +30,11 @@ public final class ParameterSender implements AutoCloseable {
         return this;
     }
 
-    /** Builds the SmartSoft change-parameter query body (without id) for an arch binding. */
-    public static ObjectNode changeParameter(Binding arch, double value) {
+    /**
+     * Builds the SmartSoft change-parameter query body (without id) for an arch binding. Numbers
+     * are sent as doubles, never truncated; anything else (an enum literal) as it is.
+     */
+    public static ObjectNode changeParameter(Binding arch, JsonNode value) {
         ObjectNode q = Json.object();
         q.put("type", "change-parameter");
         q.put("ParameterSetRepository", arch.text("parameterSetRepository"));
@@ -38,8 +43,9 @@ public final class ParameterSender implements AutoCloseable {
         q.put("Parameter", arch.text("parameter"));
         ObjectNode values = q.putObject("values");
         // As the original MIRoN query: the value in both slots of the parameter (e.g. min and max).
-        values.put("1", value);
-        values.put("2", value);
+        JsonNode v = value.isNumber() ? DoubleNode.valueOf(value.asDouble()) : value;
+        values.set("1", v);
+        values.set("2", v);
         return q;
     }
 

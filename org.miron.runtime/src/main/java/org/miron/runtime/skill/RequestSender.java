@@ -143,8 +143,8 @@ public final class RequestSender implements AutoCloseable {
             long left;
             while (running && (left = end - System.currentTimeMillis()) > 0) {
                 poller.poll(Math.min(left, 50));
-                // One request in flight per socket, so any reply is the ack of this query. Read
-                // without trusting the poller's flags: JeroMQ's poller can miss an edge.
+                // One request in flight per socket, so any reply is the ack of this query. The
+                // poll only paces the wait; the non-blocking read decides.
                 if (ZMsg.recvMsg(socket, false) != null) {
                     return true;
                 }

@@ -25,6 +25,7 @@ import org.zeromq.ZMQ;
  */
 public final class SkillInterfaceMock implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(SkillInterfaceMock.class.getName());
+    private static final int KEEP = 10_000; // history and results kept, oldest dropped first
 
     private record Running(long id, String name, long dueMillis, SkillTable.Entry entry) {
     }
@@ -75,7 +76,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
             poller.register(rep, ZMQ.Poller.POLLIN);
             while (active) {
                 poller.poll(nextTimeout());
-                byte[] request; // read whatever the poller says: JeroMQ's poller can miss an edge
+                byte[] request; // the poll only paces the loop; non-blocking reads decide
                 while (active && (request = rep.recv(ZMQ.DONTWAIT)) != null) {
                     while (rep.hasReceiveMore()) {
                         rep.recv(); // REP strips the envelope; extra body frames are not expected
@@ -148,6 +149,9 @@ public final class SkillInterfaceMock implements AutoCloseable {
                 values.deepCopy(), List.of(cmd.toString(), "COMMIT"), System.currentTimeMillis());
         synchronized (this) {
             history.add(change);
+            if (history.size() > KEEP) {
+                history.remove(0);
+            }
             committed.put(tag, change.values());
             notifyAll();
         }
@@ -192,6 +196,9 @@ public final class SkillInterfaceMock implements AutoCloseable {
         pub.send(Json.write(msg));
         synchronized (this) {
             results.add(msg);
+            if (results.size() > KEEP) {
+                results.remove(0);
+            }
             notifyAll();
         }
     }

@@ -77,6 +77,34 @@ public class CommandsTest {
     }
 
     @Test
+    public void playPublishesAScenarioThroughABroker() throws Exception {
+        Endpoints ep = Ports.endpoints();
+        Path scenario = tmp.newFile("s.json").toPath();
+        Files.writeString(scenario, "[{\"at\": 0, \"estimate\": {\"name\": \"safety\", \"value\": 0.4}},"
+                + " {\"at\": 50, \"context\": {\"name\": \"Door\", \"type\": \"event\", \"value\": true}}]");
+        try (org.miron.runtime.broker.Broker broker = new org.miron.runtime.broker.Broker(ep).start()) {
+            String[] r = run(new PlayCommand(), scenario.toString(), "--time-scale", "0.5", "--bus-in", ep.busIn());
+            assertEquals(r[1], "0", r[0]);
+            long end = System.currentTimeMillis() + 10_000;
+            while (broker.cachedTopics() < 2 && System.currentTimeMillis() < end) {
+                Thread.sleep(10);
+            }
+            assertEquals("both steps reached the broker's cache", 2, broker.cachedTopics());
+        }
+    }
+
+    @Test
+    public void brokerOnABusyPortFailsWithAClearMessage() throws Exception {
+        Endpoints ep = Ports.endpoints();
+        try (org.miron.runtime.broker.Broker first = new org.miron.runtime.broker.Broker(ep).start()) {
+            String[] r = run(new BrokerCommand(), "--request", ep.request(), "--skill", ep.skill(),
+                    "--bus-in", ep.busIn(), "--bus-out", ep.busOut());
+            assertEquals("2", r[0]);
+            assertTrue(r[1], r[1].startsWith("miron broker: error: broker cannot bind"));
+        }
+    }
+
+    @Test
     public void runtimeMainListsTheSubcommands() {
         CommandLine cl = new CommandLine(new RuntimeMain());
         assertEquals(java.util.Set.of("broker", "engine", "skill-mock", "play", "execute"), cl.getSubcommands().keySet());

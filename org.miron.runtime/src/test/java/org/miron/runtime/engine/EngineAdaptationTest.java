@@ -85,13 +85,22 @@ public class EngineAdaptationTest {
 
     @Test
     public void coalescesBurstsAndUsesTheLatestValue() throws Exception {
+        long before = f.engine.status().get("solves");
         for (int i = 0; i < 40; i++) {
             f.estimate("safety", 0.9 - i * 0.01); // ends at 0.51
         }
         f.estimate("safety", 0.3); // -> 10 + 27 = 37
         assertTrue("latest value decides", f.skills.awaitChange(c -> c.value() == 37.0, EngineFixture.TIMEOUT).isPresent());
-        assertTrue("bursts are coalesced, not queued: " + f.engine.status().get("solves"),
-                f.engine.status().get("solves") < 41);
+        long solves = f.engine.status().get("solves") - before;
+        assertTrue("41 inputs coalesced into fewer solves, not queued: " + solves, solves < 41);
+    }
+
+    @Test
+    public void statusIsPublishedAsAHeartbeat() throws Exception {
+        long solves = f.engine.status().get("solves"); // quiet from now on: no more inputs
+        assertTrue("a status without a solve in between", poll(() -> f.probe.messages(Topics.STATUS).stream()
+                .filter(m -> m.body().path("counters").path("solves").asLong() == solves).count() >= 2));
+        assertEquals(solves, f.engine.status().get("solves"));
     }
 
     @Test

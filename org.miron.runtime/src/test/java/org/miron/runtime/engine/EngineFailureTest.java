@@ -77,9 +77,22 @@ public class EngineFailureTest {
     }
 
     @Test
+    public void unknownBackendIsAClearStartupError() throws Exception {
+        EngineOptions o = f.options();
+        o.backend = "quantum";
+        try {
+            Engine.create(o);
+            fail("engine accepted an unknown backend");
+        } catch (EngineStartException e) {
+            assertTrue(e.getMessage(), e.getMessage().contains("unknown backend 'quantum' (available: minizinc"));
+        }
+    }
+
+    @Test
     public void timeoutKeepsLastGoodConfiguration() throws Exception {
         f.startInfrastructure().startSkills().startEngine(shortLimit());
         assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
+        f.syncInputs();
         injectAndRecover(() -> Files.writeString(f.mzn, goodModel + SLOW), "TIMEOUT", "timeout");
     }
 
@@ -98,20 +111,38 @@ public class EngineFailureTest {
         assertNotNull("the MiniZinc error message is reported", status);
     }
 
-    @Test
-    public void solverCrashKeepsLastGoodConfiguration() throws Exception {
-        // A wrapper that behaves like minizinc until the file "crash" exists, then dies by SIGSEGV.
+    /** A wrapper that behaves like minizinc until the file {@code trigger} exists, then runs {@code fault}. */
+    private EngineOptions wrapped(String trigger, String fault) throws Exception {
         Path wrapper = f.dir.resolve("minizinc-wrapper.sh");
         Files.writeString(wrapper, "#!/bin/sh\n"
-                + "if [ -e \"$(dirname \"$0\")/crash\" ]; then kill -SEGV $$; fi\n"
+                + "if [ -e \"$(dirname \"$0\")/" + trigger + "\" ]; then " + fault + "; fi\n"
                 + "exec minizinc \"$@\"\n");
         Files.setPosixFilePermissions(wrapper, PosixFilePermissions.fromString("rwxr-xr-x"));
-        EngineOptions o = f.options();
+        EngineOptions o = shortLimit();
         o.minizinc = wrapper.toString();
-        f.startInfrastructure().startSkills().startEngine(o);
+        return o;
+    }
+
+    @Test
+    public void solverCrashKeepsLastGoodConfiguration() throws Exception {
+        f.startInfrastructure().startSkills().startEngine(wrapped("crash", "kill -SEGV $$"));
         assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
+        f.syncInputs();
         injectAndRecover(() -> Files.writeString(f.dir.resolve("crash"), ""), "ERROR", "error",
                 () -> Files.delete(f.dir.resolve("crash")));
+    }
+
+    @Test
+    public void hungSolverIsKilledByTheWatchdog() throws Exception {
+        // ignores its own time limit: the engine must kill it (and its child) after limit + grace
+        f.startInfrastructure().startSkills().startEngine(wrapped("hang", "sleep 120"));
+        assertNotNull(f.awaitVariant("task", "pickDeliverCharge"));
+        f.syncInputs();
+        injectAndRecover(() -> Files.writeString(f.dir.resolve("hang"), ""), "TIMEOUT", "timeout",
+                () -> Files.delete(f.dir.resolve("hang")));
+        JsonNode killed = f.probe.await(Topics.STATUS, s -> s.path("lastError").path("message").asText()
+                .startsWith("minizinc killed after"), EngineFixture.TIMEOUT);
+        assertNotNull("the watchdog, not minizinc, ended the solve", killed);
     }
 
     private interface Io {
@@ -143,6 +174,7 @@ public class EngineFailureTest {
     @Test
     public void badInputIsCountedDroppedAndSurvived() throws Exception {
         f.startAll();
+        long solves = f.engine.status().get("solves");
         f.publish(Topics.ESTIMATE, "{not json");
         f.publish(Topics.CONTEXT, "[1,2,3]");
         f.publish("roqme.bogus", "{\"name\":\"safety\",\"value\":0.1}");
@@ -153,12 +185,13 @@ public class EngineFailureTest {
         f.publish(Topics.CONTEXT, "{\"name\":\"BatteryLevel\",\"namespace\":\"Intralogistics\",\"type\":\"number\",\"value\":true}");
         f.publish(Topics.CONTEXT, "{\"name\":\"Space\",\"namespace\":\"Intralogistics\",\"type\":\"enum\",\"value\":\"MEDIUM\"}");
         f.publish(Topics.OVERRIDE_PREFIX + "task", "{\"value\":\"fly\"}");
-        JsonNode status = f.awaitStatus(s -> s.path("counters").path("malformedInput").asLong() == 2
+        f.publish(Topics.ESTIMATE, ""); // no body at all
+        JsonNode status = f.awaitStatus(s -> s.path("counters").path("malformedInput").asLong() == 3
                 && s.path("counters").path("unknownInput").asLong() == 3
                 && s.path("counters").path("badTypeInput").asLong() == 5);
-        assertNotNull("all ten bad messages counted: " + last(f.probe), status);
+        assertNotNull("all eleven bad messages counted: " + last(f.probe), status);
         assertTrue(f.engine.isAlive());
-        assertEquals("no input reached the solver", 1, f.engine.status().get("solves"));
+        assertEquals("no input reached the solver", solves, f.engine.status().get("solves"));
         // still adapting
         f.publish(Topics.CONTEXT, "{\"name\":\"BatteryLevel\",\"namespace\":\"Intralogistics\",\"type\":\"number\",\"value\":3.5}");
         assertNotNull(f.awaitVariant("task", "dock"));

@@ -59,6 +59,7 @@ public final class EngineFixture implements AutoCloseable {
         o.ackTimeoutMs = 500;
         o.backoffMinMs = 100;
         o.backoffMaxMs = 400;
+        o.statusIntervalMs = 1000;
         return o;
     }
 
@@ -87,7 +88,23 @@ public final class EngineFixture implements AutoCloseable {
         startSkills();
         startEngine(options());
         assertNotNull("initial task decision", awaitVariant("task", "pickDeliverCharge"));
+        syncInputs();
         return this;
+    }
+
+    /**
+     * Makes sure the engine's input subscription is live: a neutral context (a known, full battery)
+     * must cause one more solve. It arrives live or, if the engine's SUB connected late, through
+     * the broker's last-value cache; either way later test messages then arrive live.
+     */
+    public void syncInputs() throws InterruptedException {
+        long before = engine.status().get("solves");
+        publish(Topics.CONTEXT, "{\"name\":\"BatteryLevel\",\"namespace\":\"Intralogistics\",\"type\":\"number\",\"value\":50}");
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (engine.status().get("solves") <= before && System.currentTimeMillis() < end) {
+            Thread.sleep(10);
+        }
+        assertTrue("engine receives inputs", engine.status().get("solves") > before);
     }
 
     public JsonNode awaitVariant(String vp, String value) throws InterruptedException {
