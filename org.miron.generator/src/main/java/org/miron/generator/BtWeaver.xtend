@@ -1,20 +1,24 @@
 package org.miron.generator
 
 import java.nio.file.Path
+import java.util.ArrayDeque
 import java.util.LinkedHashMap
 import java.util.LinkedHashSet
 import java.util.List
+import java.util.Map
 import java.util.Set
 import org.eclipse.emf.common.util.URI
 import org.eclipse.emf.ecore.EObject
 import org.eclipse.emf.ecore.resource.Resource
 import org.eclipse.emf.ecore.util.EcoreUtil
+import org.eclipse.xtext.EcoreUtil2
 import org.miron.bt.bt.Attribute
 import org.miron.bt.bt.BTModel
 import org.miron.bt.bt.BehaviorTree
 import org.miron.bt.bt.BtFactory
 import org.miron.bt.bt.ControlNode
 import org.miron.bt.bt.SubtreeNode
+import org.miron.bt.bt.SubtreePlus
 import org.miron.bt.bt.Switch
 import org.miron.bt.bt.TreeNode
 import org.miron.bt.scoping.BtGlobalScopeProvider
@@ -36,6 +40,8 @@ import org.miron.dsl.util.Imports
  *    exactly one child or counts its children (a tree, a decorator, a Switch) target and Switch
  *    are wrapped in a Sequence instead, which keeps the tree loadable and the cases aligned;
  *  - a numeric varpoint bound to an attribute replaces its value by the port {vp};
+ *  - the keys the runtime writes into the main tree's blackboard ({vp_sel}, {vp}) are remapped on
+ *    every subtree call between the main tree and the subtree that reads them;
  *  - the main tree's root is wrapped once in the monitoring Parallel whose Repeat ticks one
  *    VariantAction per enum varpoint.
  * Trees of other files stay there and are reached through includes relative to the output
@@ -76,15 +82,23 @@ class BtWeaver {
 		val copies = woven.map[copier.copy(contents.head) as BTModel].toList
 		copier.copyReferences
 
+		// Blackboard keys the runtime writes into the main tree (vp_sel, vp), by the tree reading them.
+		val readers = new LinkedHashMap<BehaviorTree, Set<String>>
 		for (vp : bound) {
 			for (target : targets.get(vp)) {
 				val copy = copier.get(target)
+				val key = if (vp.isEnum) vp.selection else vp.name
 				switch copy {
-					Attribute: copy.value = "{" + (if (vp.isEnum) vp.selection else vp.name) + "}"
+					Attribute: copy.value = "{" + key + "}"
 					TreeNode: if (vp.isEnum) insert(vp, copy)
+				}
+				val reader = EcoreUtil2.getContainerOfType(copy, BehaviorTree)
+				if (reader !== null && (vp.isEnum || copy instanceof Attribute)) {
+					readers.computeIfAbsent(reader)[new LinkedHashSet] += key
 				}
 			}
 		}
+		exposeKeys(copies, readers)
 
 		val out = factory.createBTModel
 		out.attributes += copies.head.attributes.toList
@@ -99,6 +113,42 @@ class BtWeaver {
 			}
 		}
 		out
+	}
+
+	// ------------------------------------------------------------------ blackboard visibility
+
+	/**
+	 * A subtree called with its own blackboard (BehaviorTree.CPP's default) does not see the main
+	 * tree's keys, where the runtime writes {vp_sel} and {vp}. Each key a subtree reads is remapped
+	 * on every call between the main tree and that subtree: k="{k}" on a SubTreePlus, k="k" on a
+	 * SubTree (BehaviorTree.CPP 3's remapping forms); calls that share the blackboard or remap
+	 * automatically pass it through as they are.
+	 */
+	def private exposeKeys(List<BTModel> copies, Map<BehaviorTree, Set<String>> readers) {
+		val primary = copies.head
+		val main = primary.main_tree_to_execute ?: primary.trees.head?.name
+		val trees = copies.map[it.trees].flatten.toList
+		val pending = new ArrayDeque<Pair<BehaviorTree, String>>
+		readers.forEach[tree, keys|keys.forEach[key|pending += tree -> key]]
+		val done = newHashSet
+		while (!pending.empty) {
+			val next = pending.poll
+			val tree = next.key
+			val key = next.value
+			if (tree.name != main && done.add(tree.name + "/" + key)) {
+				for (call : trees.map[eAllContents.filter(SubtreeNode).toList].flatten.filter[behaviorTree?.name == tree.name].toList) {
+					if (!passesThrough(call) && call.attribute(key) === null) {
+						call.attributes += attribute(key, if (call instanceof SubtreePlus) "{" + key + "}" else key)
+					}
+					pending += EcoreUtil2.getContainerOfType(call, BehaviorTree) -> key
+				}
+			}
+		}
+	}
+
+	def private static passesThrough(SubtreeNode call) {
+		"true".equalsIgnoreCase(call.attribute("__shared_blackboard"))
+			|| (call instanceof SubtreePlus && "true".equalsIgnoreCase(call.attribute("__autoremap")))
 	}
 
 	// ------------------------------------------------------------------ Switch insertion

@@ -50,7 +50,8 @@ public class WeaverGoldenTest {
                 "include_twice",    // ... already included by the nominal tree: included once
                 "port",             // numeric varpoint bound to an attribute: {speed}, no monitoring
                 "two_targets",      // one varpoint, two targets: a Switch at each
-                "two");             // two enum varpoints: both monitored
+                "two",              // two enum varpoints: both monitored
+                "deep");            // a port and a Switch in subtrees: keys remapped on the calls above them
 
     }
 

@@ -177,4 +177,45 @@ public class GenerateSolveRunTest {
         assertTrue(calls.toString(), calls.contains("SlowDownSign"));
         assertTrue(calls.toString(), calls.contains("Handover"));
     }
+
+    @Test
+    public void numericDecisionsReachThePortsOfASubtreeWithItsOwnBlackboard() throws Exception {
+        Path dir = generateInto("hospital-ports", "hospital-delivery", "hospital");
+        // An operator pins navigation to its preset (the nominal Navigate subtree) by the manual override.
+        int normal = 0;
+        for (JsonNode vp : JSON.readTree(dir.resolve("hospital.io.json").toFile()).get("varpoints")) {
+            if (vp.get("name").asText().equals("navigation")) {
+                normal = vp.get("preset").asInt();
+            }
+        }
+        Map<String, String> decision = solve(dir, "hospital", Map.of("navigation_input", true,
+                "navigation_input_value", normal));
+        assertEquals("normal", decision.get("navigation"));
+
+        List<String> moves = new ArrayList<>();
+        ActionRegistry registry = new ActionRegistry();
+        for (String action : List.of("OpenDrawer", "GraspBox", "RecoveryRotate", "SlowDownSign", "CallElevator",
+                "Charge", "Handover", "Speak", "Dispense")) {
+            registry.registerSync(action, ports -> NodeStatus.SUCCESS);
+        }
+        registry.registerSync("MoveBase", ports -> {
+            moves.add(ports.getDouble("max_speed").orElse(Double.NaN) + "/" + ports.getDouble("inflation").orElse(Double.NaN));
+            return NodeStatus.SUCCESS;
+        });
+        VariantSource variants = new VariantSource();
+        registry.registerVariantAction(variants);
+        for (String enumVarpoint : List.of("navigation", "preparation", "courtesy")) {
+            variants.publish(enumVarpoint, decision.get(enumVarpoint));
+        }
+        // As the live executor does with miron.blackboard.<vp>: numbers into the main tree's blackboard.
+        VariantSource numbers = new VariantSource();
+        numbers.publish("driveSpeed", Double.parseDouble(decision.get("driveSpeed")));
+        numbers.publish("inflation", Double.parseDouble(decision.get("inflation")));
+        Tree tree = new TreeBuilder(registry, new TreeContext()).build(dir.resolve("hospital.ext.xml"));
+        tree.feedBlackboardFrom(numbers);
+        assertEquals(NodeStatus.SUCCESS, tree.tickWhileRunning(Duration.ZERO));
+        // The first move is the Navigate subtree's "drive"; ReturnToBase keeps its own literal speed.
+        assertEquals(Double.parseDouble(decision.get("driveSpeed")) + "/" + Double.parseDouble(decision.get("inflation")),
+                moves.get(0));
+    }
 }
