@@ -69,4 +69,43 @@ public class HospitalDecisionTest {
         data.put("preparation_input_value", mzn.index("preparation", "none"));
         assertEquals("none", mzn.value("preparation", mzn.solve(data)));
     }
+
+    /**
+     * The rules never contradict each other: with every context known and at every combination
+     * of the contexts and of metric values on both sides of the rules' thresholds, there is a
+     * decision (an UNSAT model would leave the robot on its last configuration).
+     */
+    @Test
+    public void theRulesAgreeInEverySituation() {
+        int situations = 0;
+        for (int crowding = 0; crowding < 3; crowding++) {
+            for (int shift = 0; shift < 3; shift += 2) { // day, night
+                for (boolean urgent : new boolean[] { false, true }) {
+                    for (boolean lowBattery : new boolean[] { false, true }) {
+                        for (double safety : new double[] { 0.3, 0.9 }) {
+                            for (double comfort : new double[] { 0.3, 0.9 }) {
+                                for (double autonomy : new double[] { 0.2, 0.9 }) {
+                                    ObjectNode data = mzn.defaults();
+                                    data.put("context_Hospital_crowding", crowding);
+                                    data.put("context_Hospital_shift", shift);
+                                    data.put("context_Hospital_urgent", urgent);
+                                    data.put("context_Hospital_lowBattery", lowBattery);
+                                    for (String context : new String[] { "crowding", "shift", "urgent", "lowBattery" }) {
+                                        data.put("context_Hospital_" + context + "_known", true);
+                                    }
+                                    data.put("metric_Hospital_safety", safety);
+                                    data.put("metric_Hospital_timeliness", 0.1);
+                                    data.put("metric_Hospital_comfort", comfort);
+                                    data.put("metric_Hospital_autonomy", autonomy);
+                                    mzn.solve(data); // fails the test when unsatisfiable
+                                    situations++;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assertEquals(192, situations);
+    }
 }
