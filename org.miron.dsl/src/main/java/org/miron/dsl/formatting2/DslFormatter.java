@@ -56,6 +56,20 @@ public class DslFormatter extends AbstractJavaFormatter {
         }
     }
 
+    /** avg(, repeat(, range(, belief(: the parenthesis of a call, not of a sub-expression. */
+    private static boolean isCall(ISemanticRegion paren) {
+        ISemanticRegion previous = paren.getPreviousSemanticRegion();
+        if (previous == null) {
+            return false;
+        }
+        EObject owner = previous.getSemanticElement();
+        String word = previous.getText();
+        return owner instanceof FunctionCall && word.equals(((FunctionCall) owner).getFunction())
+                || owner instanceof RepeatExpression && word.equals("repeat")
+                || owner instanceof RangeExpression && word.equals("range")
+                || owner instanceof BeliefExpression && word.equals("belief");
+    }
+
     private void formatToken(ISemanticRegion region, IFormattableDocument doc) {
         String text = region.getText();
         EObject owner = region.getSemanticElement();
@@ -69,8 +83,7 @@ public class DslFormatter extends AbstractJavaFormatter {
             }
         } else if (text.equals("(") || text.equals("[")) {
             doc.append(region, this::noSpace);
-            if (owner instanceof FunctionCall || owner instanceof RepeatExpression || owner instanceof RangeExpression
-                    || owner instanceof BeliefExpression) {
+            if (text.equals("(") && isCall(region)) {
                 doc.prepend(region, this::noSpace);
             }
         } else if (text.equals(")") || text.equals("]")) {

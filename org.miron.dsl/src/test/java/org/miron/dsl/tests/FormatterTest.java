@@ -124,4 +124,13 @@ public class FormatterTest {
         }
         assertEquals(failures.stream().limit(3).collect(Collectors.joining("\n\n")), 0, failures.size());
     }
+
+    @Test
+    public void parenthesesOfCallsAndOfSubExpressions() throws IOException {
+        File file = new File("src/test/resources/models/roqme/valid/tool_style.roqme");
+        String formatted = check(file);
+        assertEquals(formatted, true, formatted.contains(
+                "observation d8 : (!Lifted repeat(100)) or (!Charging repeat(50)) reinforces reliability"));
+        assertEquals(formatted, true, formatted.contains("observation d5 : eventWhen(Level < 20) undermines"));
+    }
 }
