@@ -8,6 +8,7 @@ import org.eclipse.xtext.validation.Check;
 import org.miron.bt.bt.TreeNode;
 import org.miron.dsl.bt.BtXPath;
 import org.miron.dsl.miron.ArchBinding;
+import org.miron.dsl.miron.BehaviorTreeEnumType;
 import org.miron.dsl.miron.BtBinding;
 import org.miron.dsl.miron.InsertionType;
 import org.miron.dsl.miron.MironPackage;
@@ -65,13 +66,17 @@ public class BindingChecks extends CheckSet {
             for (BtXPath.Selection s : result.selections) {
                 if (numeric && !s.isAttribute()) {
                     error("numeric varpoint '" + vp.getName() + "' is bound to " + s.describe()
-                            + ", which is not an attribute: the XPath must select a port such as @" + "speed",
+                            + ", which is not an attribute: the XPath must select a port such as @speed",
                             binding, M.getBtBinding_Xpath());
                     break;
                 } else if (binding.getInsertionType() != InsertionType.IN && !s.isTreeNode()) {
                     error("varpoint '" + vp.getName() + "': '" + binding.getInsertionType().getLiteral()
                             + "' needs tree nodes, but the XPath selects "
                             + s.describe(), binding, M.getBtBinding_Xpath());
+                    break;
+                } else if (type instanceof BehaviorTreeEnumType && !s.isTreeNode()) {
+                    error("varpoint '" + vp.getName() + "' switches behaviour trees, so it must be bound to tree nodes,"
+                            + " but the XPath selects " + s.describe(), binding, M.getBtBinding_Xpath());
                     break;
                 }
             }
