@@ -61,6 +61,25 @@ public class DslValueConverterService extends DefaultTerminalConverters {
         };
     }
 
+    /**
+     * Enum literal references: the serializer hands over the literal's qualified name joined with
+     * dots (the name converter's default); the syntax joins the segments with "::".
+     */
+    @ValueConverter(rule = "EnumLiteralName")
+    public IValueConverter<String> enumLiteralName() {
+        return new IValueConverter<String>() {
+            @Override
+            public String toValue(String string, INode node) {
+                return string;
+            }
+
+            @Override
+            public String toString(String value) {
+                return value == null ? null : value.replace("::", ".").replace(".", "::");
+            }
+        };
+    }
+
     @ValueConverter(rule = "Number")
     public IValueConverter<Double> number() {
         return DOUBLE;

@@ -1,0 +1,117 @@
+package org.miron.dsl.formatting2;
+
+import java.util.Set;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.formatting2.AbstractJavaFormatter;
+import org.eclipse.xtext.formatting2.IFormattableDocument;
+import org.eclipse.xtext.formatting2.regionaccess.ISemanticRegion;
+import org.miron.dsl.miron.ArchBinding;
+import org.miron.dsl.miron.BehaviorTreeEnumType;
+import org.miron.dsl.miron.ImpactOnQuality;
+import org.miron.dsl.miron.NumericSampledType;
+import org.miron.dsl.miron.Rule;
+import org.miron.dsl.roqme.BeliefExpression;
+import org.miron.dsl.roqme.BoundedType;
+import org.miron.dsl.roqme.FunctionCall;
+import org.miron.dsl.roqme.Observation;
+import org.miron.dsl.roqme.RangeExpression;
+import org.miron.dsl.roqme.RepeatExpression;
+import org.miron.dsl.roqme.RoqmeModel;
+import org.miron.dsl.roqme.UnaryExpression;
+
+/**
+ * Formatter of RoQME and MIRoN files: one declaration per line (at most one blank line kept
+ * between them), single spaces between tokens, none inside parentheses, before commas, in ranges
+ * (0:1:100), calls avg(x), x'avg and impacts safety++; the blocks of observations, BT enums,
+ * samples, arch bindings and rules get one item per indented line, while short lists such as
+ * enum { A, B } and impact sets stay on one line. Comments are kept.
+ */
+public class DslFormatter extends AbstractJavaFormatter {
+
+    /** Elements whose { } block holds one item per line. */
+    private static final Set<Class<?>> BLOCKS = Set.of(Observation.class, BehaviorTreeEnumType.class,
+            NumericSampledType.class, ArchBinding.class, Rule.class);
+
+    protected void format(RoqmeModel model, IFormattableDocument doc) {
+        // defaults first, at low priority, so that every rule below overrides them
+        for (ISemanticRegion region : allSemanticRegions(model)) {
+            doc.append(region, f -> {
+                f.oneSpace();
+                f.lowPriority();
+            });
+        }
+        for (EObject element : model.eContents()) {
+            if (previousHiddenRegion(element).getPreviousSemanticRegion() != null) {
+                doc.prepend(element, f -> f.setNewLines(1, 1, 2));
+            }
+        }
+        ISemanticRegion last = null;
+        for (ISemanticRegion region : allSemanticRegions(model)) {
+            formatToken(region, doc);
+            last = region;
+        }
+        if (last != null) {
+            doc.append(last, f -> f.setNewLines(1)); // the file ends with one line break
+        }
+    }
+
+    /** avg(, repeat(, range(, belief(: the parenthesis of a call, not of a sub-expression. */
+    private static boolean isCall(ISemanticRegion paren) {
+        ISemanticRegion previous = paren.getPreviousSemanticRegion();
+        if (previous == null) {
+            return false;
+        }
+        EObject owner = previous.getSemanticElement();
+        String word = previous.getText();
+        return owner instanceof FunctionCall && word.equals(((FunctionCall) owner).getFunction())
+                || owner instanceof RepeatExpression && word.equals("repeat")
+                || owner instanceof RangeExpression && word.equals("range")
+                || owner instanceof BeliefExpression && word.equals("belief");
+    }
+
+    private void formatToken(ISemanticRegion region, IFormattableDocument doc) {
+        String text = region.getText();
+        EObject owner = region.getSemanticElement();
+        boolean block = BLOCKS.stream().anyMatch(c -> c.isInstance(owner));
+        if (text.startsWith("/**")) {
+            doc.append(region, this::newLine);
+        } else if (text.equals(",")) {
+            doc.prepend(region, this::noSpace);
+            if (block) {
+                doc.append(region, this::newLine);
+            }
+        } else if (text.equals("(") || text.equals("[")) {
+            doc.append(region, this::noSpace);
+            if (text.equals("(") && isCall(region)) {
+                doc.prepend(region, this::noSpace);
+            }
+        } else if (text.equals(")") || text.equals("]")) {
+            doc.prepend(region, this::noSpace);
+        } else if (text.equals("'") || (text.equals(":") && owner instanceof BoundedType)) {
+            doc.surround(region, this::noSpace);
+        } else if (text.equals("@")) {
+            doc.append(region, this::noSpace);
+        } else if (owner instanceof ImpactOnQuality && text.matches("[-+]+")) {
+            doc.prepend(region, this::noSpace);
+        } else if (owner instanceof UnaryExpression && (text.equals("-") || text.equals("!"))) {
+            doc.append(region, this::noSpace);
+        } else if (text.equals("{") && block) {
+            ISemanticRegion close = regionFor(owner).keyword("}");
+            doc.append(region, this::newLine);
+            if (close != null) {
+                doc.prepend(close, this::newLine);
+                doc.interior(region, close, this::indent);
+            }
+        } else if (owner instanceof ArchBinding && text.startsWith("parameter") || owner instanceof ArchBinding
+                && text.equals("component")) {
+            doc.prepend(region, this::newLine);
+        }
+        // one action per line in an observation block
+        if (owner instanceof Observation && text.equals("{")) {
+            for (EObject action : ((Observation) owner).getActions()) {
+                doc.prepend(action, this::newLine);
+            }
+        }
+    }
+}

@@ -1,0 +1,136 @@
+package org.miron.dsl.tests;
+
+import static org.junit.Assert.assertEquals;
+
+import java.io.ByteArrayInputStream;
+import java.io.File;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.formatting2.FormatterPreferenceKeys;
+import org.eclipse.xtext.formatting2.FormatterRequest;
+import org.eclipse.xtext.formatting2.IFormatter2;
+import org.eclipse.xtext.formatting2.regionaccess.ITextRegionAccess;
+import org.eclipse.xtext.formatting2.regionaccess.TextRegionAccessBuilder;
+import org.eclipse.xtext.preferences.MapBasedPreferenceValues;
+import org.eclipse.xtext.resource.XtextResource;
+import org.eclipse.xtext.resource.XtextResourceSet;
+import org.junit.Test;
+
+/**
+ * The formatter (what `miron format` runs for any language): formatting keeps the model, adds
+ * no error, and formatting twice changes nothing more. Figure 3 gets a known layout.
+ */
+public class FormatterTest {
+
+    /** Formats a parsed file as the CLI does: two-space indentation, '\n' line ends. */
+    static String format(XtextResource resource) {
+        IFormatter2 formatter = resource.getResourceServiceProvider().get(IFormatter2.class);
+        ITextRegionAccess regions = resource.getResourceServiceProvider().get(TextRegionAccessBuilder.class)
+                .forNodeModel(resource).create();
+        MapBasedPreferenceValues preferences = new MapBasedPreferenceValues();
+        preferences.put(FormatterPreferenceKeys.indentation, "  ");
+        preferences.put(FormatterPreferenceKeys.lineSeparator, "\n");
+        FormatterRequest request = new FormatterRequest();
+        request.setTextRegionAccess(regions);
+        request.setPreferences(preferences);
+        request.setFormatUndefinedHiddenRegionsOnly(false);
+        return regions.getRewriter().renderToString(formatter.format(request));
+    }
+
+    /** Formats a file, checks the result, and returns it. */
+    private static String check(File file) throws IOException {
+        XtextResource resource = (XtextResource) Models.load(file);
+        String once = format(resource);
+        XtextResource again = reparse(file, once);
+        assertEquals(file + ":\n" + once, List.of(), again.getErrors());
+        assertEquals(file + ": formatting is not stable", once, format(again));
+        assertEquals(file + ": formatting changed the model", strip(resource), strip(again));
+        return once;
+    }
+
+    private static XtextResource reparse(File original, String text) throws IOException {
+        XtextResourceSet set = Models.injector().getInstance(XtextResourceSet.class);
+        URI uri = URI.createFileURI(new File(original.getParentFile(), "formatted_" + original.getName()).getAbsolutePath());
+        Resource resource = set.createResource(uri);
+        resource.load(new ByteArrayInputStream(text.getBytes(StandardCharsets.UTF_8)), null);
+        return (XtextResource) resource;
+    }
+
+    /** The model's tokens without layout: what formatting must not change. */
+    private static String strip(XtextResource resource) {
+        StringBuilder tokens = new StringBuilder();
+        for (org.eclipse.xtext.nodemodel.ILeafNode leaf : resource.getParseResult().getRootNode().getLeafNodes()) {
+            if (!leaf.isHidden()) {
+                tokens.append(leaf.getText()).append(' ');
+            }
+        }
+        return tokens.toString();
+    }
+
+    @Test
+    public void figure3() throws IOException {
+        String formatted = check(new File(Models.root(), "examples/intralogistics/intralogistics.miron"));
+        assertEquals(String.join("\n",
+                "import \"intralogistics.bt\" as main",
+                "import \"intralogistics.roqme\" as roqme",
+                "",
+                "@varpoint task : enum {",
+                "  pick : main.PickDeliverCharge,",
+                "  deliver : main.DeliverCharge,",
+                "  dock : main.Charge,",
+                "  pickDeliverCharge : preset",
+                "} in main.PickDeliverChargeSubtree",
+                "",
+                "@varpoint maxVelocity : number (10:1:100) {",
+                "  10 affects roqme.safety++,",
+                "  100 affects roqme.mission_completion++",
+                "} in arch {",
+                "  parameterSetRepository \"CommNavigationObjects\"",
+                "  parameterSet \"CdParameter\"",
+                "  component \"SmartCdServer\"",
+                "  parameter \"transvel\"",
+                "}",
+                "",
+                "rule noBattery : roqme.power_autonomy < 0.3 implies task = task::dock",
+                ""), formatted);
+    }
+
+    @Test
+    public void everyModel() throws IOException {
+        List<File> files = new ArrayList<>();
+        try (Stream<Path> paths = Files.walk(new File("src/test/resources/models").toPath())) {
+            paths.filter(p -> p.getParent().endsWith("valid")).sorted().forEach(p -> files.add(p.toFile()));
+        }
+        try (Stream<Path> paths = Files.walk(new File(Models.root(), "examples").toPath())) {
+            paths.filter(p -> p.toString().endsWith(".roqme") || p.toString().endsWith(".miron")).sorted()
+                    .forEach(p -> files.add(p.toFile()));
+        }
+        List<String> failures = new ArrayList<>();
+        for (File file : files) {
+            try {
+                check(file);
+            } catch (AssertionError | RuntimeException e) {
+                failures.add(e.toString());
+            }
+        }
+        assertEquals(failures.stream().limit(3).collect(Collectors.joining("\n\n")), 0, failures.size());
+    }
+
+    @Test
+    public void parenthesesOfCallsAndOfSubExpressions() throws IOException {
+        File file = new File("src/test/resources/models/roqme/valid/tool_style.roqme");
+        String formatted = check(file);
+        assertEquals(formatted, true, formatted.contains(
+                "observation d8 : (!Lifted repeat(100)) or (!Charging repeat(50)) reinforces reliability"));
+        assertEquals(formatted, true, formatted.contains("observation d5 : eventWhen(Level < 20) undermines"));
+    }
+}
