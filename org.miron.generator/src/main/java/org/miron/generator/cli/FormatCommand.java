@@ -13,9 +13,10 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** `miron format FILE`: prints the file as tidy, indented XML. */
+/** `miron format FILE`: prints the file formatted by its language's Xtext formatter. */
 @Command(name = "format", mixinStandardHelpOptions = true,
-        description = "Prints a behaviour-tree file formatted (indented XML, comments kept).",
+        description = "Prints a model file formatted: indented XML for behaviour trees, one declaration per line and "
+                + "indented blocks for RoQME and MIRoN; comments kept.",
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = { "0:formatted", "1:the file has syntax errors", "2:usage error" })
 public class FormatCommand implements Callable<Integer> {
