@@ -1,5 +1,6 @@
 package org.miron.runtime.broker;
 
+import org.miron.runtime.Contexts;
 import java.util.logging.Logger;
 import org.miron.runtime.Endpoints;
 import org.zeromq.ZContext;
@@ -12,7 +13,7 @@ import org.zeromq.ZContext;
 public final class Broker implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(Broker.class.getName());
     private final Endpoints endpoints;
-    private final ZContext ctx = new ZContext();
+    private final ZContext ctx = Contexts.create();
     private final LastValueCache cache = new LastValueCache(10_000);
     private RequestProxy requests;
     private BusProxy bus;

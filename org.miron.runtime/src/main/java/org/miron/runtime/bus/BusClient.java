@@ -1,5 +1,6 @@
 package org.miron.runtime.bus;
 
+import org.miron.runtime.Contexts;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -36,7 +37,7 @@ public final class BusClient implements AutoCloseable {
     private final String subscribeEndpoint;
     private final List<String> subscriptions;
     private final Handler handler;
-    private final ZContext ctx = new ZContext();
+    private final ZContext ctx = Contexts.create();
     private final BlockingQueue<String[]> outbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
     private final CountDownLatch ready = new CountDownLatch(1);
     private final AtomicLong dropped = new AtomicLong();

@@ -1,5 +1,6 @@
 package org.miron.runtime.skill;
 
+import org.miron.runtime.Contexts;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -40,7 +41,7 @@ public final class RequestSender implements AutoCloseable {
     private final long backoffMaxMs;
     private final Listener listener;
     private final Map<String, ObjectNode> pending = new LinkedHashMap<>();
-    private final ZContext ctx = new ZContext();
+    private final ZContext ctx = Contexts.create();
     private final Thread thread;
     private volatile boolean running = true;
     public RequestSender(String endpoint, String threadName, long ackTimeoutMs, long backoffMinMs,

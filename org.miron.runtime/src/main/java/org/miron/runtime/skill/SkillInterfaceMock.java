@@ -1,5 +1,6 @@
 package org.miron.runtime.skill;
 
+import org.miron.runtime.Contexts;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
@@ -33,7 +34,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
     private final String repEndpoint;
     private final String pubEndpoint;
     private final SkillTable table;
-    private final ZContext ctx = new ZContext();
+    private final ZContext ctx = Contexts.create();
     private final List<ParameterChange> history = new ArrayList<>();
     private final Map<String, JsonNode> committed = new LinkedHashMap<>();
     private final List<ObjectNode> results = new ArrayList<>();

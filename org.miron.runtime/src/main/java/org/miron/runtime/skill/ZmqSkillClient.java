@@ -1,5 +1,6 @@
 package org.miron.runtime.skill;
 
+import org.miron.runtime.Contexts;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
@@ -33,7 +34,7 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     private final Map<Long, CompletableFuture<SkillResult>> pending = new ConcurrentHashMap<>();
     // Ids start from the clock so that two executor runs never reuse an id the interface may still know.
     private final AtomicLong nextId = new AtomicLong(System.currentTimeMillis() * 1000);
-    private final ZContext ctx = new ZContext();
+    private final ZContext ctx = Contexts.create();
     private final Thread resultsThread;
     private volatile boolean running = true;
     private volatile long malformed;
