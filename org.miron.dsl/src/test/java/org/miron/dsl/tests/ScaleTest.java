@@ -1,7 +1,6 @@
 package org.miron.dsl.tests;
 
 import static org.junit.Assert.assertEquals;
-import static org.junit.Assert.assertTrue;
 
 import java.io.File;
 import java.io.IOException;
@@ -10,13 +9,16 @@ import java.nio.file.Files;
 import java.util.List;
 import java.util.stream.Collectors;
 
-import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 
-/** A large model (thousands of references) validates in reasonable time: no quadratic blow-up. */
+/**
+ * A large model (thousands of references across two files) loads and validates without errors.
+ * How long it takes is measured by {@code gradle :org.miron.dsl:benchmark} ({@link ScaleBenchmark}),
+ * not asserted here.
+ */
 public class ScaleTest {
 
     @Rule
@@ -24,7 +26,14 @@ public class ScaleTest {
 
     @Test
     public void largeModel() throws IOException {
-        int n = 1500;
+        File main = write(folder.getRoot(), 1500);
+        List<String> errors = Models.validateAll(Models.load(main)).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .map(Models::format).limit(5).collect(Collectors.toList());
+        assertEquals(List.of(), errors);
+    }
+
+    /** Writes big.roqme and big.miron with n contexts, properties, observations and rules; returns big.miron. */
+    static File write(File dir, int n) throws IOException {
         StringBuilder roqme = new StringBuilder("roqme Big\ntype Level : enum { LOW, MID, HIGH }\n");
         for (int i = 0; i < n; i++) {
             roqme.append("context c").append(i).append(" : number (0:100)\n");
@@ -33,7 +42,7 @@ public class ScaleTest {
             roqme.append("observation o").append(i).append(" : c").append(i).append(" > 50 & l").append(i)
                     .append(" = Level::HIGH reinforces p").append(i).append(" high\n");
         }
-        File big = folder.newFile("big.roqme");
+        File big = new File(dir, "big.roqme");
         Files.writeString(big.toPath(), roqme, StandardCharsets.UTF_8);
         StringBuilder miron = new StringBuilder("import \"big.roqme\" as b\n");
         miron.append("@varpoint v : number (0:1:100)\n");
@@ -41,15 +50,8 @@ public class ScaleTest {
             miron.append("rule r").append(i).append(" : b.c").append(i).append(" < 10 & b.l").append(i)
                     .append(" = b::Level::LOW implies v <= ").append(i % 100).append('\n');
         }
-        File main = folder.newFile("big.miron");
+        File main = new File(dir, "big.miron");
         Files.writeString(main.toPath(), miron, StandardCharsets.UTF_8);
-        long start = System.nanoTime();
-        Resource resource = Models.load(main);
-        List<String> errors = Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
-                .map(Models::format).limit(5).collect(Collectors.toList());
-        long seconds = (System.nanoTime() - start) / 1_000_000_000L;
-        assertEquals(List.of(), errors);
-        assertTrue("took " + seconds + " s", seconds < 60);
-        System.out.println("ScaleTest: " + (6 * n) + " elements loaded and validated in " + seconds + " s");
+        return main;
     }
 }
