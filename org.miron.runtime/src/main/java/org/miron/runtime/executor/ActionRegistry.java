@@ -71,6 +71,10 @@ public final class ActionRegistry {
         return this;
     }
 
+    public boolean isControlRegistered(String id) {
+        return controls.containsKey(id);
+    }
+
     public boolean isDecoratorRegistered(String id) {
         return decorators.containsKey(id);
     }
@@ -79,9 +83,8 @@ public final class ActionRegistry {
     public Node createControl(String id, NodeInfo info, List<Node> children) {
         ControlFactory factory = controls.get(id);
         if (factory == null) {
-            throw new BtBuildException(info.path() + ": no control node " + (decorators.isEmpty() ? "" : "or decorator ")
-                    + "is registered for ID '" + id + "' (register it with ActionRegistry.registerControl"
-                    + " or registerDecorator)");
+            throw new BtBuildException(info.path() + ": no control node is registered for ID '" + id
+                    + "' (register it with ActionRegistry.registerControl)");
         }
         return made(factory.create(info, children), id, info);
     }

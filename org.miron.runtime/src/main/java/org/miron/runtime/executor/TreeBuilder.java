@@ -280,14 +280,18 @@ public final class TreeBuilder {
      */
     private Node customControl(CustomControl custom, NodeInfo info, List<Node> children) {
         String id = requireCustomId(custom, info);
-        if (!"Control".equals(custom.getTag()) && registry.isDecoratorRegistered(id)) {
-            if (children.size() != 1) {
-                throw new BtBuildException(info.path() + ": a decorator has exactly one child, " + id + " has "
-                        + children.size());
-            }
-            return registry.createDecorator(id, info, children.get(0));
+        if ("Control".equals(custom.getTag()) || registry.isControlRegistered(id)) {
+            return registry.createControl(id, info, children);
         }
-        return registry.createControl(id, info, children);
+        if (!registry.isDecoratorRegistered(id)) {
+            throw new BtBuildException(info.path() + ": no control node or decorator is registered for ID '" + id
+                    + "' (register it with ActionRegistry.registerControl or registerDecorator)");
+        }
+        if (children.size() != 1) {
+            throw new BtBuildException(info.path() + ": a decorator has exactly one child, " + id + " has "
+                    + children.size());
+        }
+        return registry.createDecorator(id, info, children.get(0));
     }
 
     private static String requireCustomId(TreeNode custom, NodeInfo info) {

@@ -129,8 +129,19 @@ public class CustomNodesTest {
             tree("Unregistered");
             fail("nothing is registered for RateController");
         } catch (BtBuildException e) {
-            assertTrue(e.getMessage(), e.getMessage().startsWith("Unregistered/seq/RateController: "));
-            assertTrue(e.getMessage(), e.getMessage().contains("'RateController'"));
+            assertTrue(e.getMessage(), e.getMessage().startsWith(
+                    "Unregistered/seq/RateController: no control node or decorator is registered for ID 'RateController'"));
+        }
+    }
+
+    @Test
+    public void anUnregisteredExplicitControlIsABuildErrorNamingItsPath() {
+        registry.registerDecorator("LastOnly", TwiceNode::new);
+        try {
+            tree("CustomControl");
+            fail("LastOnly is a decorator, not a control node");
+        } catch (BtBuildException e) {
+            assertTrue(e.getMessage(), e.getMessage().startsWith("CustomControl/LastOnly: no control node is registered for ID 'LastOnly'"));
         }
     }
 
