@@ -8,6 +8,7 @@ import org.eclipse.xtext.parser.antlr.Lexer;
 import org.eclipse.xtext.parser.antlr.LexerBindings;
 import org.eclipse.xtext.parser.antlr.LexerProvider;
 import org.eclipse.xtext.scoping.IGlobalScopeProvider;
+import org.eclipse.xtext.serializer.sequencer.ISyntacticSequencer;
 import org.miron.bt.conversion.BtValueConverterService;
 import org.miron.bt.formatting2.BtFormatter;
 import org.miron.bt.linking.BtLinkingDiagnosticMessageProvider;
@@ -15,6 +16,7 @@ import org.miron.bt.naming.BtQualifiedNameProvider;
 import org.miron.bt.parser.BtLexer;
 import org.miron.bt.parser.antlr.lexer.InternalBtLexer;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
+import org.miron.bt.serializer.BtCloseTagSequencer;
 
 import com.google.inject.Binder;
 import com.google.inject.Provider;
@@ -56,6 +58,12 @@ public class BtRuntimeModule extends AbstractBtRuntimeModule {
 
     public Class<? extends IFormatter2> bindIFormatter2() {
         return BtFormatter.class;
+    }
+
+    // Compact elements' closing names are not in the model: written back from the tag.
+    @Override
+    public Class<? extends ISyntacticSequencer> bindISyntacticSequencer() {
+        return BtCloseTagSequencer.class;
     }
 
     public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {

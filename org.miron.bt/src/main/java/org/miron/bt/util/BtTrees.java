@@ -16,12 +16,16 @@ import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.EcoreUtil2;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.bt.TreeNode;
 import org.miron.bt.bt.TreeNodesModel;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 
 /** Navigation over a BT file and the files it includes. */
 public final class BtTrees {
     private static final Pattern DECLARED_ID = Pattern.compile("\\bID\\s*=\\s*[\"']([^\"']+)[\"']");
+    /** A declaration with its kind: {@code <Decorator ID="RateController">}. */
+    private static final Pattern DECLARATION = Pattern.compile(
+            "<\\s*([A-Za-z_][\\w.:-]*)[^<>]*?\\bID\\s*=\\s*[\"']([^\"']+)[\"']");
 
     private BtTrees() {
     }
@@ -95,5 +99,26 @@ public final class BtTrees {
             }
         }
         return ids;
+    }
+
+    /**
+     * Node IDs declared in a TreeNodesModel with the element that declares them (Action, Condition,
+     * Decorator, Control, SubTree), read as leniently as {@link #declaredNodeIds}.
+     */
+    public static Map<String, String> declaredNodeKinds(TreeNodesModel nodesModel) {
+        Map<String, String> kinds = new LinkedHashMap<>();
+        if (nodesModel != null && nodesModel.getContent() != null) {
+            Matcher matcher = DECLARATION.matcher(nodesModel.getContent());
+            while (matcher.find()) {
+                kinds.putIfAbsent(matcher.group(2), matcher.group(1));
+            }
+        }
+        return kinds;
+    }
+
+    /** The ID a custom control or decorator is registered under: its ID attribute in the explicit form, else its tag. */
+    public static String customNodeId(TreeNode node) {
+        boolean explicit = "Control".equals(node.getTag()) || "Decorator".equals(node.getTag());
+        return explicit ? node.attribute("ID") : node.getTag();
     }
 }

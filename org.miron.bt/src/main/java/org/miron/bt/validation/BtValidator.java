@@ -8,6 +8,7 @@ import java.util.Set;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.EcoreUtil2;
+import org.eclipse.xtext.nodemodel.ILeafNode;
 import org.eclipse.xtext.validation.Check;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
@@ -17,9 +18,12 @@ import org.miron.bt.bt.BlackboardCheckInt;
 import org.miron.bt.bt.BlackboardCheckString;
 import org.miron.bt.bt.BtPackage;
 import org.miron.bt.bt.Condition;
+import org.miron.bt.bt.CustomControl;
+import org.miron.bt.bt.Delay;
 import org.miron.bt.bt.ControlNode;
 import org.miron.bt.bt.DecoratorNode;
 import org.miron.bt.bt.FallbackStar;
+import org.miron.bt.bt.IfThenElse;
 import org.miron.bt.bt.Import;
 import org.miron.bt.bt.Parallel;
 import org.miron.bt.bt.Repeat;
@@ -29,8 +33,10 @@ import org.miron.bt.bt.SubtreeNode;
 import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
+import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
+import org.miron.bt.util.BtCloseTags;
 import org.miron.bt.util.BtTrees;
 
 /**
@@ -110,8 +116,28 @@ public class BtValidator extends AbstractBtValidator {
 
     @Check
     public void checkControlChildren(ControlNode node) {
-        if (node.getNodes().isEmpty()) {
+        if (node.getNodes().isEmpty() && !isConditional(node)) {
             error(node.getTag() + " needs at least one child", node, BT.getTreeNode_Tag());
+        }
+    }
+
+    private static boolean isConditional(ControlNode node) {
+        return node instanceof IfThenElse || node instanceof WhileDoElse;
+    }
+
+    /** IfThenElse and WhileDoElse: a condition, a then-branch and an optional else-branch. */
+    @Check
+    public void checkConditional(ControlNode node) {
+        if (!isConditional(node)) {
+            return;
+        }
+        int children = node.getNodes().size();
+        if (children < 2) {
+            error(node.getTag() + " needs 2 or 3 children (condition, then, optional else), it has " + children,
+                    node, BT.getTreeNode_Tag());
+        } else if (children > 3) {
+            error(node.getTag() + " needs 2 or 3 children (condition, then, optional else), it has " + children,
+                    node.getNodes().get(3), null);
         }
     }
 
@@ -196,6 +222,13 @@ public class BtValidator extends AbstractBtValidator {
     }
 
     @Check
+    public void checkDelay(Delay node) {
+        checkInteger(node, "delay_msec", true, 0);
+        warning("Delay needs BehaviorTree.CPP 3.8 or later; earlier 3.x releases do not register it", node,
+                BT.getTreeNode_Tag());
+    }
+
+    @Check
     public void checkFallbackStar(FallbackStar node) {
         warning("FallbackStar is not registered in BehaviorTree.CPP 3; write Fallback (or ReactiveFallback) "
                 + "for files that must load there", node, BT.getTreeNode_Tag());
@@ -222,9 +255,11 @@ public class BtValidator extends AbstractBtValidator {
         requireAttribute(node, "output_key");
     }
 
+    /** Explicit forms name the registered node by ID: Action, Condition, Control, Decorator. */
     @Check
-    public void checkLeafId(TreeNode node) {
-        boolean explicit = "Action".equals(node.getTag()) || node instanceof Condition;
+    public void checkRegisteredId(TreeNode node) {
+        boolean explicit = "Action".equals(node.getTag()) || node instanceof Condition
+                || "Control".equals(node.getTag()) || "Decorator".equals(node.getTag());
         if (explicit && node.attribute("ID") == null) {
             error(node.getTag() + " needs an ID attribute naming the registered node", node, BT.getTreeNode_Tag());
         }
@@ -254,6 +289,44 @@ public class BtValidator extends AbstractBtValidator {
         if (!BtTrees.declaredNodeIds(model.getNodesmodel()).contains(node.getTag())) {
             warning("<" + node.getTag() + "/> is neither a BehaviorTree nor declared in TreeNodesModel; "
                     + "it must be registered in the executor", node, BT.getTreeNode_Tag());
+        }
+    }
+
+    /**
+     * A compact element with children, {@code <RateController hz="1">...</RateController>}: its ID
+     * should be declared, and a node declared as an Action or a Condition takes no children, one
+     * declared as a Decorator exactly one.
+     */
+    @Check
+    public void checkCompactControl(CustomControl node) {
+        if ("Control".equals(node.getTag()) || node.getTag() == null) {
+            return;
+        }
+        BTModel model = EcoreUtil2.getContainerOfType(node, BTModel.class);
+        if (model.getNodesmodel() == null) {
+            return;
+        }
+        String kind = BtTrees.declaredNodeKinds(model.getNodesmodel()).get(node.getTag());
+        int children = node.getNodes().size();
+        if (kind == null) {
+            warning("<" + node.getTag() + "> is not declared in TreeNodesModel; it must be registered in the "
+                    + "executor as a control node", node, BT.getTreeNode_Tag());
+        } else if (kind.equals("Decorator") && children != 1) {
+            error("<" + node.getTag() + "> is declared as a Decorator in TreeNodesModel and needs exactly one child, it has "
+                    + children, node.getNodes().get(1), null);
+        } else if (kind.equals("Action") || kind.equals("Condition")) {
+            error("<" + node.getTag() + "> is declared as " + (kind.equals("Action") ? "an " : "a ") + kind
+                    + " in TreeNodesModel and cannot have children", node, BT.getTreeNode_Tag());
+        }
+    }
+
+    /** {@code <GoTo></GoTo>}, {@code <Rate>...</Rate>}: the grammar cannot require equal names, so this does. */
+    @Check
+    public void checkClosingName(TreeNode node) {
+        ILeafNode closing = BtCloseTags.closingName(node);
+        if (closing != null && !closing.getText().equals(node.getTag())) {
+            acceptError("</" + closing.getText() + "> does not close <" + node.getTag() + ">: write </" + node.getTag()
+                    + ">", node, closing.getOffset(), closing.getLength(), null);
         }
     }
 

@@ -15,7 +15,10 @@ import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
 import org.miron.bt.bt.BtPackage;
 import org.miron.bt.bt.ControlNode;
+import org.miron.bt.bt.CustomControl;
+import org.miron.bt.bt.CustomDecorator;
 import org.miron.bt.bt.DecoratorNode;
+import org.miron.bt.bt.Delay;
 import org.miron.bt.bt.Fallback;
 import org.miron.bt.bt.RetryUntilSuccess;
 import org.miron.bt.bt.Sequence;
@@ -74,6 +77,37 @@ public class MetamodelMappingTest {
         assertEquals("GoTo", goTo.getTag());
         assertEquals("-2.5", goTo.attribute("y"));
         assertNull(goTo.attribute("ID"));
+    }
+
+    @Test
+    public void builtInsOfBehaviorTreeCpp3MapToTheirClasses() {
+        Sequence ifs = (Sequence) root(model("if_then_else.bt"), 0);
+        assertSame(BtPackage.Literals.IF_THEN_ELSE, ifs.getNodes().get(0).eClass());
+        assertEquals(3, ((ControlNode) ifs.getNodes().get(0)).getNodes().size());
+        Sequence whiles = (Sequence) root(model("while_do_else.bt"), 0);
+        assertSame(BtPackage.Literals.WHILE_DO_ELSE, whiles.getNodes().get(1).eClass());
+        assertSame(BtPackage.Literals.KEEP_RUNNING_UNTIL_FAILURE, root(model("keep_running_until_failure.bt"), 0).eClass());
+        Delay delay = (Delay) ((Sequence) root(model("delay.bt"), 0)).getNodes().get(0);
+        assertEquals("1500", delay.attribute("delay_msec"));
+        assertTrue(delay.getNode() instanceof Action);
+    }
+
+    @Test
+    public void customNodesWithChildrenKeepTheirRegisteredId() {
+        CustomControl scheduler = (CustomControl) root(model("custom_explicit_forms.bt"), 0);
+        assertEquals("Control", scheduler.getTag());
+        assertEquals("PriorityScheduler", scheduler.getNodeId());
+        CustomDecorator rate = (CustomDecorator) scheduler.getNodes().get(0);
+        assertEquals("RateController", rate.getNodeId());
+        assertEquals(List.of("ID", "hz"), rate.getAttributes().stream().map(a -> a.getName()).collect(Collectors.toList()));
+
+        CustomControl compact = (CustomControl) root(model("compact_with_children.bt"), 0);
+        assertEquals("PriorityScheduler", compact.getNodeId());
+        CustomControl compactRate = (CustomControl) compact.getNodes().get(0);
+        assertEquals("RateController", compactRate.getTag());
+        assertEquals(1, compactRate.getNodes().size());
+        Action beep = (Action) compact.getNodes().get(2);
+        assertEquals("written <Beep></Beep>: still an action", "Beep", beep.getTag());
     }
 
     @Test

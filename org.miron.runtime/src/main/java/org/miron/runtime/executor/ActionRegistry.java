@@ -1,5 +1,6 @@
 package org.miron.runtime.executor;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
@@ -11,13 +12,16 @@ import java.util.function.Supplier;
 
 /**
  * Resolves Action and Condition IDs to runtime nodes: Java actions registered here first, then the
- * fallback strategy for every other ID.
+ * fallback strategy for every other ID. User-registered control nodes and decorators (elements with
+ * children) are resolved here too, by ID, without fallback.
  */
 public final class ActionRegistry {
     /** The ID the weaver gives the node that follows a variation point's decisions. */
     public static final String VARIANT_ACTION = "VariantAction";
 
     private final Map<String, ActionFactory> factories = new ConcurrentHashMap<>();
+    private final Map<String, ControlFactory> controls = new ConcurrentHashMap<>();
+    private final Map<String, DecoratorFactory> decorators = new ConcurrentHashMap<>();
     private volatile UnregisteredActionStrategy fallback = UnregisteredActionStrategy.REJECT;
 
     /** Registers any node factory under an ID, replacing an earlier one. */
@@ -55,6 +59,53 @@ public final class ActionRegistry {
         return register(VARIANT_ACTION, spec -> new VariantActionNode(spec.info(), variants));
     }
 
+    /** A custom control node: {@code <Control ID="id">} or {@code <id>children</id>}; one node per element. */
+    public ActionRegistry registerControl(String id, ControlFactory factory) {
+        controls.put(Objects.requireNonNull(id), Objects.requireNonNull(factory));
+        return this;
+    }
+
+    /** A custom decorator: {@code <Decorator ID="id">} or {@code <id>child</id>}; one node per element. */
+    public ActionRegistry registerDecorator(String id, DecoratorFactory factory) {
+        decorators.put(Objects.requireNonNull(id), Objects.requireNonNull(factory));
+        return this;
+    }
+
+    public boolean isControlRegistered(String id) {
+        return controls.containsKey(id);
+    }
+
+    public boolean isDecoratorRegistered(String id) {
+        return decorators.containsKey(id);
+    }
+
+    /** The node of a custom control element, built from its children. */
+    public Node createControl(String id, NodeInfo info, List<Node> children) {
+        ControlFactory factory = controls.get(id);
+        if (factory == null) {
+            throw new BtBuildException(info.path() + ": no control node is registered for ID '" + id
+                    + "' (register it with ActionRegistry.registerControl)");
+        }
+        return made(factory.create(info, children), id, info);
+    }
+
+    /** The node of a custom decorator element, built from its child. */
+    public Node createDecorator(String id, NodeInfo info, Node child) {
+        DecoratorFactory factory = decorators.get(id);
+        if (factory == null) {
+            throw new BtBuildException(info.path() + ": no decorator is registered for ID '" + id
+                    + "' (register it with ActionRegistry.registerDecorator)");
+        }
+        return made(factory.create(info, child), id, info);
+    }
+
+    private static Node made(Node node, String id, NodeInfo info) {
+        if (node == null) {
+            throw new BtBuildException(info.path() + ": the factory for '" + id + "' made no node");
+        }
+        return node;
+    }
+
     public ActionRegistry setFallback(UnregisteredActionStrategy strategy) {
         this.fallback = Objects.requireNonNull(strategy);
         return this;
@@ -71,10 +122,6 @@ public final class ActionRegistry {
     /** The node for one Action/Condition element of the tree. */
     public Node create(ActionSpec spec) {
         ActionFactory factory = factories.get(spec.id());
-        Node node = factory != null ? factory.create(spec) : fallback.create(spec);
-        if (node == null) {
-            throw new BtBuildException(spec.info().path() + ": the factory for '" + spec.id() + "' made no node");
-        }
-        return node;
+        return made(factory != null ? factory.create(spec) : fallback.create(spec), spec.id(), spec.info());
     }
 }

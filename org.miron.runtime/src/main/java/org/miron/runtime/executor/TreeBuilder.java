@@ -25,12 +25,17 @@ import org.miron.bt.bt.BlackboardCheckInt;
 import org.miron.bt.bt.BlackboardCheckString;
 import org.miron.bt.bt.Condition;
 import org.miron.bt.bt.ControlNode;
+import org.miron.bt.bt.CustomControl;
+import org.miron.bt.bt.CustomDecorator;
 import org.miron.bt.bt.DecoratorNode;
+import org.miron.bt.bt.Delay;
 import org.miron.bt.bt.Fallback;
 import org.miron.bt.bt.FallbackStar;
 import org.miron.bt.bt.ForceFailure;
 import org.miron.bt.bt.ForceSuccess;
+import org.miron.bt.bt.IfThenElse;
 import org.miron.bt.bt.Inverter;
+import org.miron.bt.bt.KeepRunningUntilFailure;
 import org.miron.bt.bt.Parallel;
 import org.miron.bt.bt.Repeat;
 import org.miron.bt.bt.RetryUntilSuccess;
@@ -43,6 +48,7 @@ import org.miron.bt.bt.SubtreePlus;
 import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
+import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtTrees;
 
@@ -201,6 +207,15 @@ public final class TreeBuilder {
             checkThreshold(info, ParallelNode.FAILURE_THRESHOLD, false, children.size());
             return new ParallelNode(info, children);
         }
+        if (control instanceof IfThenElse) {
+            return new IfThenElseNode(info, children);
+        }
+        if (control instanceof WhileDoElse) {
+            return new WhileDoElseNode(info, children);
+        }
+        if (control instanceof CustomControl custom) {
+            return customControl(custom, info, children);
+        }
         if (control instanceof Switch) {
             int cases;
             try {
@@ -236,6 +251,16 @@ public final class TreeBuilder {
             checkIntPort(info, TimeoutNode.MSEC);
             return new TimeoutNode(info, child);
         }
+        if (decorator instanceof KeepRunningUntilFailure) {
+            return new KeepRunningUntilFailureNode(info, child);
+        }
+        if (decorator instanceof Delay) {
+            checkIntPort(info, DelayNode.DELAY_MSEC);
+            return new DelayNode(info, child);
+        }
+        if (decorator instanceof CustomDecorator custom) {
+            return registry.createDecorator(requireCustomId(custom, info), info, child);
+        }
         if (decorator instanceof BlackboardCheckInt) {
             return new BlackboardCheckNode(info, BlackboardCheckNode.Kind.INT, child);
         }
@@ -246,6 +271,35 @@ public final class TreeBuilder {
             return new BlackboardCheckNode(info, BlackboardCheckNode.Kind.STRING, child);
         }
         throw new BtBuildException(info.path() + ": unsupported decorator " + decorator.getTag());
+    }
+
+    /**
+     * {@code <Control ID="x">} or a compact element with children {@code <x>...</x>}. The compact form
+     * is also how a decorator can be written, so an ID registered as a decorator makes one, given the
+     * element has exactly one child.
+     */
+    private Node customControl(CustomControl custom, NodeInfo info, List<Node> children) {
+        String id = requireCustomId(custom, info);
+        if ("Control".equals(custom.getTag()) || registry.isControlRegistered(id)) {
+            return registry.createControl(id, info, children);
+        }
+        if (!registry.isDecoratorRegistered(id)) {
+            throw new BtBuildException(info.path() + ": no control node or decorator is registered for ID '" + id
+                    + "' (register it with ActionRegistry.registerControl or registerDecorator)");
+        }
+        if (children.size() != 1) {
+            throw new BtBuildException(info.path() + ": a decorator has exactly one child, " + id + " has "
+                    + children.size());
+        }
+        return registry.createDecorator(id, info, children.get(0));
+    }
+
+    private static String requireCustomId(TreeNode custom, NodeInfo info) {
+        String id = BtTrees.customNodeId(custom);
+        if (id == null || id.isBlank()) {
+            throw new BtBuildException(info.path() + ": " + custom.getTag() + " needs an ID attribute");
+        }
+        return id;
     }
 
     /** SubTree: isolated blackboard unless __shared_blackboard; other attributes remap a key to a parent key by name. */
@@ -391,7 +445,9 @@ public final class TreeBuilder {
         if (node instanceof SubtreeNode subtree && subtree.getBehaviorTree() != null && subtree.getBehaviorTree().getName() != null) {
             return subtree.getBehaviorTree().getName();
         }
-        if ((node instanceof Action || node instanceof Condition) && node.attribute("ID") != null) {
+        boolean registered = node instanceof Action || node instanceof Condition || node instanceof CustomControl
+                || node instanceof CustomDecorator;
+        if (registered && node.attribute("ID") != null) {
             return node.attribute("ID");
         }
         return node.getTag();

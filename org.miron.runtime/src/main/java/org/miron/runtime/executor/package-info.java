@@ -8,6 +8,8 @@
  *         .registerSync("objectdrop", ports -> NodeStatus.SUCCESS)
  *         .registerAsync("navigate", NavigateAction::new)      // RUNNING until done, told when halted
  *         .registerVariantAction(variants)                      // <Action ID="VariantAction" .../>
+ *         .registerDecorator("RateController", RateController::new) // <RateController hz="1">child</...>
+ *         .registerControl("PriorityScheduler", Scheduler::new) // <Control ID="PriorityScheduler">...
  *         .setFallback(new SkillActionStrategy(skillClient));   // every other ID: push-skill requests
  * TreeContext context = new TreeContext();
  * context.addListener(new ConsoleTracePrinter());                // status changes as they happen
@@ -35,6 +37,8 @@
  * once no longer hangs the tree.</li>
  * <li>Timeout reads the clock when it is ticked (no timer thread): it fails on the first tick at
  * which msec have passed since its first tick, which makes it deterministic and testable.</li>
+ * <li>Delay likewise: its child is ticked from the first tick at which delay_msec have passed
+ * since its first tick (delay_msec="0" ticks the child at once, not on the next tick).</li>
  * <li>FallbackStar (no longer in BT.CPP 3) mirrors SequenceStar: after a SUCCESS it keeps its
  * position.</li>
  * <li>A tree ID used as a tag is a SubTree (BT.CPP 4 style); a value in braces names the parent key.</li>

@@ -1,0 +1,51 @@
+package org.miron.bt.util;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.xtext.Assignment;
+import org.eclipse.xtext.GrammarUtil;
+import org.eclipse.xtext.RuleCall;
+import org.eclipse.xtext.TerminalRule;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.ILeafNode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.miron.bt.bt.TreeNode;
+
+/**
+ * The closing name of a compact element ({@code <GoTo></GoTo>}, {@code <RateController>...</RateController>})
+ * as written. The grammar does not assign it to the model, so it is read from the node model: it is
+ * the element's own last NAME token that no assignment consumed.
+ */
+public final class BtCloseTags {
+    private BtCloseTags() {
+    }
+
+    /** The leaf holding the closing name, or null when the element has none (written as {@code <x/>}). */
+    public static ILeafNode closingName(TreeNode element) {
+        ICompositeNode node = NodeModelUtils.getNode(element);
+        if (node == null) {
+            return null;
+        }
+        List<ILeafNode> tokens = new ArrayList<>();
+        for (ILeafNode leaf : node.getLeafNodes()) {
+            if (!leaf.isHidden()) {
+                tokens.add(leaf);
+            }
+        }
+        // The element ends with '</' NAME '>': look at the token before the last one only.
+        if (tokens.size() < 2) {
+            return null;
+        }
+        ILeafNode candidate = tokens.get(tokens.size() - 2);
+        return isUnassignedName(candidate) ? candidate : null;
+    }
+
+    private static boolean isUnassignedName(ILeafNode leaf) {
+        if (!(leaf.getGrammarElement() instanceof RuleCall call) || !(call.getRule() instanceof TerminalRule rule)) {
+            return false;
+        }
+        Assignment assignment = GrammarUtil.containingAssignment(call);
+        return "NAME".equals(rule.getName()) && assignment == null;
+    }
+}

@@ -1,0 +1,22 @@
+package org.miron.runtime.executor;
+
+import java.util.List;
+
+/** IfThenElse and WhileDoElse: a condition child, a then-branch and an optional else-branch. */
+public abstract class ConditionalNode extends ControlNode {
+    protected static final int CONDITION = 0;
+    protected static final int THEN = 1;
+    protected static final int ELSE = 2;
+
+    protected ConditionalNode(NodeInfo info, List<Node> children, String kind) {
+        super(info, children);
+        if (children.size() != 2 && children.size() != 3) {
+            throw new BtBuildException(info.path() + ": " + kind + " needs 2 or 3 children (condition, then, optional else), not "
+                    + children.size());
+        }
+    }
+
+    protected final boolean hasElse() {
+        return children.size() == 3;
+    }
+}

@@ -1,0 +1,48 @@
+package org.miron.runtime.executor;
+
+/**
+ * Delay(delay_msec) (BehaviorTree.CPP 3.8): RUNNING until delay_msec have passed since its first
+ * tick, then ticks the child on every tick and returns its status; once the child finishes, the
+ * next tick starts a new delay. delay_msec is read on the first tick of each run. As with Timeout,
+ * the clock is read at tick time (BT.CPP uses a timer thread), so a run is deterministic.
+ */
+public final class DelayNode extends DecoratorNode {
+    public static final String DELAY_MSEC = "delay_msec";
+
+    private boolean started;
+    private long startMillis;
+    private int delayMsec;
+
+    public DelayNode(NodeInfo info, Node child) {
+        super(info, child);
+    }
+
+    @Override
+    protected NodeStatus tick() {
+        long now = context().clock().nowMillis();
+        if (!started) {
+            delayMsec = ports().requireInt(DELAY_MSEC);
+            if (delayMsec < 0) {
+                throw new BtRuntimeException(path() + ": " + DELAY_MSEC + "=" + delayMsec + " (must be at least 0)");
+            }
+            started = true;
+            startMillis = now;
+        }
+        setStatus(NodeStatus.RUNNING);
+        if (now - startMillis < delayMsec) {
+            return NodeStatus.RUNNING;
+        }
+        NodeStatus childStatus = child.executeTick();
+        if (childStatus.isCompleted()) {
+            started = false;
+            resetChild();
+        }
+        return childStatus;
+    }
+
+    @Override
+    protected void onHalt() {
+        started = false;
+        super.onHalt();
+    }
+}
