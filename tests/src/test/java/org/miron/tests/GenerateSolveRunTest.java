@@ -4,18 +4,21 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.TimeUnit;
 
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.generator.cli.MironCli;
+import org.miron.runtime.engine.InputState;
+import org.miron.runtime.engine.IoModel;
+import org.miron.runtime.engine.MiniZincBackend;
+import org.miron.runtime.engine.SolveResult;
+import org.miron.runtime.engine.VarPoint;
 import org.miron.runtime.executor.ActionRegistry;
 import org.miron.runtime.executor.NodeStatus;
 import org.miron.runtime.executor.Tree;
@@ -23,18 +26,14 @@ import org.miron.runtime.executor.TreeBuilder;
 import org.miron.runtime.executor.TreeContext;
 import org.miron.runtime.executor.VariantSource;
 
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 
 /**
- * The whole chain on the examples: generate, solve the MiniZinc model with the real minizinc as
- * the engine does, publish the decision to the woven tree's VariantAction and run the tree with
+ * The whole chain on the examples: generate, solve the MiniZinc model with the engine's own
+ * minizinc backend, publish the decision to the woven tree's VariantAction and run the tree with
  * the BT executor: the robot does what the decision says.
  */
 public class GenerateSolveRunTest {
     private static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     @ClassRule
     public static TemporaryFolder temp = new TemporaryFolder();
@@ -51,53 +50,24 @@ public class GenerateSolveRunTest {
         return out;
     }
 
-    /** The engine's default data (docs/io-json.md) with some values changed. */
-    private static ObjectNode data(JsonNode io, Map<String, Object> changes) {
-        ObjectNode data = JSON.createObjectNode();
-        for (JsonNode in : io.get("inputs")) {
-            String param = in.get("param").asText();
-            switch (in.get("type").asText()) {
-            case "float" -> data.put(param, in.has("initial") ? in.get("initial").asDouble() : 0.0);
-            case "bool" -> data.put(param, false);
-            default -> data.put(param, 0);
+    /**
+     * Solves the generated model as the engine does: its own minizinc backend, from its initial
+     * inputs (metrics at their reference, contexts unknown, no override) with some values changed.
+     * Returns the label or value chosen per varpoint.
+     */
+    private static Map<String, String> solve(Path dir, String model, Map<String, Object> changes) throws Exception {
+        IoModel io = IoModel.load(dir.resolve(model + ".io.json"));
+        Map<String, Object> params = new java.util.LinkedHashMap<>(new InputState(io).snapshot().params());
+        params.putAll(changes);
+        try (MiniZincBackend backend = new MiniZincBackend(io, "minizinc", "gecode", 20_000)) {
+            SolveResult result = backend.solve(params);
+            assertTrue(result.status() + ": " + result.message(), result.solved());
+            Map<String, String> chosen = new java.util.LinkedHashMap<>();
+            for (VarPoint vp : io.varpoints()) {
+                chosen.put(vp.name(), vp.values().get(result.decisions().get(vp.decision())).asText());
             }
-            if (in.has("known")) {
-                data.put(in.get("known").asText(), false);
-            }
+            return chosen;
         }
-        for (JsonNode vp : io.get("varpoints")) {
-            data.put(vp.get("input").asText(), false);
-            data.put(vp.get("inputValue").asText(), 0);
-            data.put(vp.get("current").asText(), -1);
-        }
-        changes.forEach((k, v) -> data.set(k, JSON.valueToTree(v)));
-        return data;
-    }
-
-    /** Runs minizinc as the engine does and returns the label or value chosen per varpoint. */
-    private static Map<String, String> solve(Path dir, String model, Map<String, Object> changes)
-            throws IOException, InterruptedException {
-        JsonNode io = JSON.readTree(dir.resolve(model + ".io.json").toFile());
-        Process p = new ProcessBuilder("minizinc", "--solver", "gecode", "--json-stream", "--output-mode", "json",
-                "--time-limit", "20000", "-d", io.get("dzn").asText(), "--cmdline-json-data",
-                data(io, changes).toString(), io.get("mzn").asText()).directory(dir.toFile()).start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        p.getErrorStream().readAllBytes();
-        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
-        JsonNode solution = null;
-        for (String line : out.split("\n")) {
-            JsonNode msg = JSON.readTree(line);
-            if ("solution".equals(msg.path("type").asText())) {
-                solution = msg.get("output").get("json"); // the last one is the best
-            }
-        }
-        assertTrue("no solution: " + out, solution != null);
-        Map<String, String> chosen = new java.util.LinkedHashMap<>();
-        for (JsonNode vp : io.get("varpoints")) {
-            int index = solution.get(vp.get("decision").asText()).asInt();
-            chosen.put(vp.get("name").asText(), vp.get("values").get(index).asText());
-        }
-        return chosen;
     }
 
     @Test
@@ -182,12 +152,7 @@ public class GenerateSolveRunTest {
     public void numericDecisionsReachThePortsOfASubtreeWithItsOwnBlackboard() throws Exception {
         Path dir = generateInto("hospital-ports", "hospital-delivery", "hospital");
         // An operator pins navigation to its preset (the nominal Navigate subtree) by the manual override.
-        int normal = 0;
-        for (JsonNode vp : JSON.readTree(dir.resolve("hospital.io.json").toFile()).get("varpoints")) {
-            if (vp.get("name").asText().equals("navigation")) {
-                normal = vp.get("preset").asInt();
-            }
-        }
+        int normal = IoModel.load(dir.resolve("hospital.io.json")).varpoint("navigation").orElseThrow().preset();
         Map<String, String> decision = solve(dir, "hospital", Map.of("navigation_input", true,
                 "navigation_input_value", normal));
         assertEquals("normal", decision.get("navigation"));

@@ -15,15 +15,10 @@ import java.util.stream.Stream;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
-import org.eclipse.xtext.formatting2.FormatterPreferenceKeys;
-import org.eclipse.xtext.formatting2.FormatterRequest;
-import org.eclipse.xtext.formatting2.IFormatter2;
-import org.eclipse.xtext.formatting2.regionaccess.ITextRegionAccess;
-import org.eclipse.xtext.formatting2.regionaccess.TextRegionAccessBuilder;
-import org.eclipse.xtext.preferences.MapBasedPreferenceValues;
 import org.eclipse.xtext.resource.XtextResource;
 import org.eclipse.xtext.resource.XtextResourceSet;
 import org.junit.Test;
+import org.miron.bt.formatting2.BtFormatting;
 
 /**
  * The formatter (what `miron format` runs for any language): formatting keeps the model, adds
@@ -31,19 +26,9 @@ import org.junit.Test;
  */
 public class FormatterTest {
 
-    /** Formats a parsed file as the CLI does: two-space indentation, '\n' line ends. */
+    /** Formats a parsed file as the CLI does (two-space indentation, '\n' line ends). */
     static String format(XtextResource resource) {
-        IFormatter2 formatter = resource.getResourceServiceProvider().get(IFormatter2.class);
-        ITextRegionAccess regions = resource.getResourceServiceProvider().get(TextRegionAccessBuilder.class)
-                .forNodeModel(resource).create();
-        MapBasedPreferenceValues preferences = new MapBasedPreferenceValues();
-        preferences.put(FormatterPreferenceKeys.indentation, "  ");
-        preferences.put(FormatterPreferenceKeys.lineSeparator, "\n");
-        FormatterRequest request = new FormatterRequest();
-        request.setTextRegionAccess(regions);
-        request.setPreferences(preferences);
-        request.setFormatUndefinedHiddenRegionsOnly(false);
-        return regions.getRewriter().renderToString(formatter.format(request));
+        return BtFormatting.format(resource);
     }
 
     /** Formats a file, checks the result, and returns it. */
