@@ -9,8 +9,7 @@ package org.miron.runtime.executor;
 public final class DelayNode extends DecoratorNode {
     public static final String DELAY_MSEC = "delay_msec";
 
-    private boolean started;
-    private long startMillis;
+    private final RunTimer timer = new RunTimer();
     private int delayMsec;
 
     public DelayNode(NodeInfo info, Node child) {
@@ -19,22 +18,19 @@ public final class DelayNode extends DecoratorNode {
 
     @Override
     protected NodeStatus tick() {
-        long now = context().clock().nowMillis();
-        if (!started) {
+        if (timer.isIdle()) {
             delayMsec = ports().requireInt(DELAY_MSEC);
             if (delayMsec < 0) {
                 throw new BtRuntimeException(path() + ": " + DELAY_MSEC + "=" + delayMsec + " (must be at least 0)");
             }
-            started = true;
-            startMillis = now;
         }
         setStatus(NodeStatus.RUNNING);
-        if (now - startMillis < delayMsec) {
+        if (timer.elapsed(context().clock()) < delayMsec) {
             return NodeStatus.RUNNING;
         }
         NodeStatus childStatus = child.executeTick();
         if (childStatus.isCompleted()) {
-            started = false;
+            timer.reset();
             resetChild();
         }
         return childStatus;
@@ -42,7 +38,7 @@ public final class DelayNode extends DecoratorNode {
 
     @Override
     protected void onHalt() {
-        started = false;
+        timer.reset();
         super.onHalt();
     }
 }

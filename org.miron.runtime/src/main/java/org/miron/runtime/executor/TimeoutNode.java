@@ -8,8 +8,7 @@ package org.miron.runtime.executor;
 public class TimeoutNode extends DecoratorNode {
     public static final String MSEC = "msec";
 
-    private boolean started;
-    private long startMillis;
+    private final RunTimer timer = new RunTimer();
 
     public TimeoutNode(NodeInfo info, Node child) {
         super(info, child);
@@ -18,19 +17,16 @@ public class TimeoutNode extends DecoratorNode {
     @Override
     protected NodeStatus tick() {
         int msec = ports().requireInt(MSEC);
-        long now = context().clock().nowMillis();
-        if (!started) {
-            started = true;
-            startMillis = now;
-        } else if (now - startMillis >= msec) {
-            started = false;
+        boolean firstTick = timer.isIdle();
+        if (timer.elapsed(context().clock()) >= msec && !firstTick) {
+            timer.reset();
             resetChild();
             return NodeStatus.FAILURE;
         }
         setStatus(NodeStatus.RUNNING);
         NodeStatus childStatus = child.executeTick();
         if (childStatus.isCompleted()) {
-            started = false;
+            timer.reset();
             resetChild();
         }
         return childStatus;
@@ -38,7 +34,7 @@ public class TimeoutNode extends DecoratorNode {
 
     @Override
     protected void onHalt() {
-        started = false;
+        timer.reset();
         super.onHalt();
     }
 }
