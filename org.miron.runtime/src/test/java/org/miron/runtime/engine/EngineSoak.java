@@ -32,14 +32,19 @@ public final class EngineSoak {
         AtomicLong lastSeq = new AtomicLong();
         AtomicLong gaps = new AtomicLong();
         AtomicLong decisions = new AtomicLong();
+        java.util.concurrent.atomic.AtomicReference<JsonNode> last = new java.util.concurrent.atomic.AtomicReference<>();
         long sentBad = 0;
         long sentGood = 0;
         try (EngineFixture f = new EngineFixture(dir)) {
             f.startAll();
+            // The fixture's probe records every message: a soak must measure the engine, not it.
+            f.probe.close();
             long heapStart = usedHeapAfterGc();
             try (BusClient watcher = new BusClient("soak-watch", f.endpoints.busIn(), f.endpoints.busOut(),
                     List.of(Topics.DECISION), (topic, body) -> {
-                        long seq = readSeq(body);
+                        JsonNode decision = read(body);
+                        last.set(decision);
+                        long seq = decision == null ? -1 : decision.path("seq").asLong();
                         long previous = lastSeq.getAndSet(seq);
                         if (previous != 0 && seq != previous + 1 && seq != previous) {
                             gaps.incrementAndGet(); // seq == previous: the cache's replay of the current one
@@ -77,7 +82,7 @@ public final class EngineSoak {
                 // The last word: battery critical, safety low. The engine must decide and apply it.
                 f.estimate("power_autonomy", 0.1);
                 f.estimate("safety", 0.2);
-                JsonNode dock = f.awaitVariant("task", "dock");
+                boolean dock = lastDecisionBecomes(last, "task", "dock") && lastDecisionBecomes(last, "maxVelocity", "28");
                 boolean transvel = lastChangeBecomes(f, 28.0);
                 long logLines = Files.readAllLines(dir.resolve("decisions.jsonl")).size();
                 var status = f.engine.status();
@@ -88,10 +93,10 @@ public final class EngineSoak {
                 System.out.printf("soak: bad input counted: malformed %d, unknown %d, bad type %d (published %d)%n",
                         status.get("malformedInput"), status.get("unknownInput"), status.get("badTypeInput"), sentBad);
                 System.out.printf("soak: decision log %d lines; engine alive %b; last inputs -> task dock %b, transvel 28 %b%n",
-                        logLines, f.engine.isAlive(), dock != null, transvel);
+                        logLines, f.engine.isAlive(), dock, transvel);
                 System.out.printf("soak: heap after GC %d MiB at start, %d MiB at most%n", heapStart >> 20, heapMax >> 20);
                 long counted = status.get("malformedInput") + status.get("unknownInput") + status.get("badTypeInput");
-                boolean ok = gaps.get() == 0 && f.engine.isAlive() && dock != null && transvel && counted == sentBad
+                boolean ok = gaps.get() == 0 && f.engine.isAlive() && dock && transvel && counted == sentBad
                         && logLines >= lastSeq.get();
                 System.out.println(ok ? "soak: OK" : "soak: FAILED");
                 if (!ok) {
@@ -114,11 +119,25 @@ public final class EngineSoak {
         return false;
     }
 
-    private static long readSeq(byte[] body) {
+    /** Whether the latest decision on the bus gets {@code varpoint} = {@code value} in time. */
+    private static boolean lastDecisionBecomes(java.util.concurrent.atomic.AtomicReference<JsonNode> last,
+            String varpoint, String value) throws InterruptedException {
+        long end = System.currentTimeMillis() + EngineFixture.TIMEOUT;
+        while (System.currentTimeMillis() < end) {
+            JsonNode decision = last.get();
+            if (decision != null && decision.path("decisions").path(varpoint).asText().replaceFirst("\\.0$", "").equals(value)) {
+                return true;
+            }
+            Thread.sleep(20);
+        }
+        return false;
+    }
+
+    private static JsonNode read(byte[] body) {
         try {
-            return Json.MAPPER.readTree(body).path("seq").asLong();
+            return Json.MAPPER.readTree(body);
         } catch (java.io.IOException e) {
-            return -1;
+            return null;
         }
     }
 
