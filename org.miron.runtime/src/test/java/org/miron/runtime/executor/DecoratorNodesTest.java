@@ -8,11 +8,6 @@ import static org.miron.runtime.executor.NodeStatus.SUCCESS;
 
 import org.junit.Before;
 import org.junit.Test;
-import org.miron.bt.bt.Action;
-import org.miron.bt.bt.Attribute;
-import org.miron.bt.bt.BehaviorTree;
-import org.miron.bt.bt.BtFactory;
-import org.miron.bt.bt.Timeout;
 
 /** Inverter, Force*, Repeat, Retry (both spellings), Timeout and the blackboard checks (decorators.bt). */
 public class DecoratorNodesTest {
@@ -26,40 +21,7 @@ public class DecoratorNodesTest {
     }
 
     private Tree tree(String id) {
-        if (id.equals("Timeout100")) {
-            // built in memory: org.miron.bt's lexer cannot read "<Timeout" yet, see timeoutFileLoads
-            return new TreeBuilder(registry, new TreeContext(clock, 5)).build(timeoutTree());
-        }
         return Fixtures.build("decorators.bt", id, registry, new TreeContext(clock, 5));
-    }
-
-    /** {@code <Timeout msec="100"><Action ID="A"/></Timeout>}, as timeout.bt holds it. */
-    private static BehaviorTree timeoutTree() {
-        BtFactory f = BtFactory.eINSTANCE;
-        Action action = f.createAction();
-        action.setTag("Action");
-        action.getAttributes().add(attribute("ID", "A"));
-        Timeout timeout = f.createTimeout();
-        timeout.setTag("Timeout");
-        timeout.getAttributes().add(attribute("msec", "100"));
-        timeout.setNode(action);
-        BehaviorTree tree = f.createBehaviorTree();
-        tree.setName("Timeout100");
-        tree.getNodes().add(timeout);
-        return tree;
-    }
-
-    private static Attribute attribute(String name, String value) {
-        Attribute attribute = BtFactory.eINSTANCE.createAttribute();
-        attribute.setName(name);
-        attribute.setValue(value);
-        return attribute;
-    }
-
-    @Test
-    public void timeoutFileLoads() {
-        Tree tree = Fixtures.build("timeout.bt", "Timeout100", registry, new TreeContext(clock, 5));
-        assertEquals(TimeoutNode.class, tree.root().getClass());
     }
 
     @Test
@@ -190,6 +152,7 @@ public class DecoratorNodesTest {
     @Test
     public void timeoutHaltsTheChildWhenTimeIsUp() {
         Tree tree = tree("Timeout100");
+        assertEquals(TimeoutNode.class, tree.root().getClass());
         a.returns(RUNNING);
         assertEquals(RUNNING, tree.tickRoot());
         clock.advance(99);
