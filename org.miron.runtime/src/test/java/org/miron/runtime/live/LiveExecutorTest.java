@@ -52,12 +52,16 @@ public class LiveExecutorTest {
 
     @After
     public void stop() {
-        if (executor != null) {
-            executor.close();
+        // A set-up that failed half-way must report its own cause, not a NullPointerException here.
+        for (AutoCloseable part : new AutoCloseable[] { executor, engine, skills, broker }) {
+            if (part != null) {
+                try {
+                    part.close();
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }
         }
-        engine.close();
-        skills.close();
-        broker.close();
     }
 
     private void decide(String value) {
