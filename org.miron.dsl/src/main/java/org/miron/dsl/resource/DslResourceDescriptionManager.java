@@ -30,6 +30,12 @@ public class DslResourceDescriptionManager extends DefaultResourceDescriptionMan
         return importsAny(deltas, candidate, context) || super.isAffected(deltas, candidate, context);
     }
 
+    /** Without an index at hand only direct imports are known. */
+    @Override
+    public boolean isAffected(Delta delta, IResourceDescription candidate) {
+        return ModelSummary.imports(candidate).contains(delta.getUri()) || super.isAffected(delta, candidate);
+    }
+
     @Override
     public boolean isAffectedByAny(Collection<Delta> deltas, IResourceDescription candidate,
             IResourceDescriptions context) {
