@@ -1,12 +1,10 @@
 package org.miron.dsl.util;
 
 import org.eclipse.emf.common.util.URI;
-import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.naming.QualifiedName;
 import org.miron.dsl.roqme.Import;
-import org.miron.dsl.roqme.RoqmeModel;
 
 /** Where an import points and under which prefix its elements are visible. */
 public final class Imports {
@@ -29,7 +27,11 @@ public final class Imports {
         }
     }
 
-    /** The imported file loaded into the importer's resource set, or null when it cannot be read. */
+    /**
+     * The imported file loaded into the importer's resource set, or null when it cannot be read.
+     * For generators, which need the imported model itself; scoping and validation read imports
+     * from the index instead (scoping/ImportedResources).
+     */
     public static Resource load(Import imp) {
         URI uri = uriOf(imp);
         Resource here = imp.eResource();
@@ -49,16 +51,13 @@ public final class Imports {
     }
 
     /** alias if given, else the imported model's namespace, else nothing (unqualified). */
-    public static QualifiedName prefixOf(Import imp, Resource imported) {
+    public static QualifiedName prefixOf(Import imp, String importedNamespace) {
         String alias = aliasOf(imp);
         if (alias != null && !alias.isEmpty()) {
             return QualifiedName.create(alias);
         }
-        if (imported != null && !imported.getContents().isEmpty()) {
-            EObject root = imported.getContents().get(0);
-            if (root instanceof RoqmeModel && ((RoqmeModel) root).getNamespace() != null) {
-                return QualifiedName.create(((RoqmeModel) root).getNamespace().split("\\."));
-            }
+        if (importedNamespace != null) {
+            return QualifiedName.create(importedNamespace.split("\\."));
         }
         return QualifiedName.EMPTY;
     }

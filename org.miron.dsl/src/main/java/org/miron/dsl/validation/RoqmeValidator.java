@@ -31,10 +31,13 @@ import org.miron.dsl.roqme.TimeValue;
 import org.miron.dsl.roqme.Timer;
 import org.miron.dsl.roqme.TypedVariable;
 import org.miron.dsl.roqme.Var;
+import org.miron.dsl.scoping.ImportedResources;
 import org.miron.dsl.util.ExprType;
 import org.miron.dsl.util.Imports;
 import org.miron.dsl.util.Names;
 import org.miron.dsl.util.Types;
+
+import com.google.inject.Inject;
 
 /**
  * RoQME's checks: imports, data types, definitions and defaults against declared types, beliefs,
@@ -45,6 +48,10 @@ import org.miron.dsl.util.Types;
 public class RoqmeValidator extends AbstractRoqmeValidator {
 
     private static final RoqmePackage R = RoqmePackage.eINSTANCE;
+
+    @Inject
+    private ImportedResources importedResources;
+
     /**
      * Elements with a syntax error inside are not checked: their model is incomplete, and a
      * check would only repeat the syntax error in confusing terms (a missing number reads as 0).
@@ -90,7 +97,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                     + " files can be imported here", imp, R.getImport_ImportURI());
         } else if (Imports.uriOf(imp) != null && Imports.uriOf(imp).equals(imp.eResource().getURI())) {
             error("a file cannot import itself", imp, R.getImport_ImportURI());
-        } else if (Imports.load(imp) == null) {
+        } else if (importedResources.description(imp) == null) {
             error("cannot find imported file '" + imp.getImportURI() + "' (paths are relative to this file)",
                     imp, R.getImport_ImportURI());
         }
