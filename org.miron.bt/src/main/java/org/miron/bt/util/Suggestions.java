@@ -19,14 +19,16 @@ public final class Suggestions {
 
     /**
      * The at most {@link #MAX} candidates nearest to {@code wanted}, nearest first, that differ from
-     * it by at most a third of its length (at least one edit, at most three): a short name with
-     * many edits is another name, not a typo. Case differences count as half an edit.
+     * it by at most a third of the length of its last segment (after the last '.' or ':'; at least
+     * one edit, at most three): a short name with many edits is another name, not a typo, and a
+     * qualifier does not make a name longer. Case differences count as half an edit.
      */
     public static List<String> closest(String wanted, Collection<String> candidates) {
         if (wanted == null || wanted.isEmpty()) {
             return List.of();
         }
-        int limit = Math.max(1, Math.min(3, wanted.length() / 3)) * 2;
+        int segment = wanted.length() - 1 - Math.max(wanted.lastIndexOf('.'), wanted.lastIndexOf(':'));
+        int limit = Math.max(1, Math.min(3, segment / 3)) * 2;
         return candidates.stream().distinct().filter(c -> !c.equals(wanted))
                 .filter(c -> cost(wanted, c) <= limit)
                 .sorted(Comparator.comparingInt((String c) -> cost(wanted, c)).thenComparing(c -> c))
