@@ -24,8 +24,8 @@ import com.google.inject.Inject;
 /**
  * Unresolved references, named in the user's terms: what kind of element was expected, what the
  * name denotes instead when it exists with another kind, and how imported names are written. Each
- * carries a {@link RoqmeIssueCodes} code; an unknown name also the closest visible names as issue
- * data, for a "did you mean" quick fix.
+ * carries a {@link RoqmeIssueCodes} code and, as issue data, what a quick fix needs: the import to
+ * add when a file next to this one declares the name, else the closest visible names ("did you mean").
  */
 public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
 
@@ -34,6 +34,9 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
 
     @Inject
     private IQualifiedNameConverter nameConverter;
+
+    @Inject
+    private MissingImports missingImports;
 
     @Override
     public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
@@ -45,15 +48,23 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
                     + ", not " + article(describe(type)), Severity.ERROR, RoqmeIssueCodes.WRONG_KIND_REFERENCE);
         }
         String message = "unknown " + describe(type) + " '" + text + "'" + hint(context.getContext(), type, text);
-        return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.UNKNOWN_REFERENCE, closest(context));
+        String delimiter = text.contains("::") ? "::" : ".";
+        MissingImports.Fix fix = missingImports.find(context.getContext(), context.getReference(),
+                nameConverter.toQualifiedName(text), delimiter);
+        if (fix != null) {
+            return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.MISSING_IMPORT, fix.importLine(),
+                    fix.reference());
+        }
+        return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.UNKNOWN_REFERENCE,
+                closest(context, delimiter));
     }
 
     /** The visible names a reference could take, closest to the text written (for "did you mean"). */
-    private String[] closest(ILinkingDiagnosticContext context) {
+    private String[] closest(ILinkingDiagnosticContext context, String delimiter) {
         List<String> names = new ArrayList<>();
         for (IEObjectDescription d : scopeProvider.getScope(context.getContext(), context.getReference())
                 .getAllElements()) {
-            names.add(nameConverter.toString(d.getName()));
+            names.add(String.join(delimiter, d.getName().getSegments()));
         }
         return Suggestions.closest(context.getLinkText(), names).toArray(new String[0]);
     }

@@ -20,6 +20,13 @@ public final class RoqmeIssueCodes {
      * the one written, nearest first, as they would be written here (may be empty).
      */
     public static final String UNKNOWN_REFERENCE = "roqme.unknown-reference";
+    /**
+     * A reference names nothing visible, but a file in the same folder, not imported yet, declares
+     * it. Data: the import line to add, e.g. {@code import "base.roqme"} or (MIRoN)
+     * {@code import "tree.bt" as t}, then the reference as written with that import, e.g.
+     * {@code Base.battery}.
+     */
+    public static final String MISSING_IMPORT = "roqme.missing-import";
     /** A reference names an element of another kind (a context where a belief is expected). */
     public static final String WRONG_KIND_REFERENCE = "roqme.wrong-kind-reference";
     /** A reference whose name matches several elements (e.g. two imports exposing it). */

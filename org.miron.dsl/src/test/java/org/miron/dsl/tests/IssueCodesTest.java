@@ -98,6 +98,40 @@ public class IssueCodesTest {
     }
 
     @Test
+    public void aNameDeclaredInANamespacedFileNextToItNamesTheImport() throws IOException {
+        write("base.roqme", "roqme Base\ncontext battery : number\n");
+        File qualified = write("q.roqme", "roqme Q\nvar v : number := Base.battery + 1\n");
+        Issue issue = single(qualified, RoqmeIssueCodes.MISSING_IMPORT);
+        assertEquals("unknown variable 'Base.battery'", issue.getMessage());
+        assertArrayEquals(new String[] { "import \"base.roqme\"", "Base.battery" }, issue.getData());
+        File plain = write("p.roqme", "roqme P\nvar v : number := battery + 1\n");
+        assertArrayEquals(new String[] { "import \"base.roqme\"", "Base.battery" },
+                single(plain, RoqmeIssueCodes.MISSING_IMPORT).getData());
+    }
+
+    @Test
+    public void anUnknownAliasNamesTheImportOfTheTreeFileNextToIt() throws IOException {
+        write("tree.bt", "<root main_tree_to_execute=\"Main\">\n  <BehaviorTree ID=\"Main\">\n"
+                + "    <Sequence name=\"mainSeq\"><SubTree ID=\"Careful\" name=\"nav\"/></Sequence>\n"
+                + "  </BehaviorTree>\n  <BehaviorTree ID=\"Careful\"><AlwaysSuccess/></BehaviorTree>\n</root>\n");
+        File model = write("m.miron", "@varpoint mode : enum { careful : t.Careful, nominal : preset } in t.nav\n");
+        List<Issue> issues = Models.validateAll(Models.load(model)).stream()
+                .filter(i -> RoqmeIssueCodes.MISSING_IMPORT.equals(i.getCode())).collect(Collectors.toList());
+        assertEquals(2, issues.size());
+        for (Issue issue : issues) {
+            assertEquals("import \"tree.bt\" as t", issue.getData()[0]);
+        }
+        assertEquals(Set.of("t.Careful", "t.nav"), issues.stream().map(i -> i.getData()[1]).collect(Collectors.toSet()));
+    }
+
+    @Test
+    public void anAlreadyImportedFileIsNotOfferedAgain() throws IOException {
+        write("base.roqme", "roqme Base\ncontext battery : number\n");
+        File file = write("main.roqme", "roqme Main\nimport \"base.roqme\"\nvar v : number := Base.speed + 1\n");
+        single(file, RoqmeIssueCodes.UNKNOWN_REFERENCE);
+    }
+
+    @Test
     public void aNameOfAnotherKindHasItsOwnCode() {
         File file = new File(MODELS, "roqme/invalid/unresolved.roqme");
         List<Issue> issues = Models.validateAll(Models.load(file)).stream()
