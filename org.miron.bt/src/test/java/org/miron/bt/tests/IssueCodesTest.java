@@ -8,6 +8,7 @@ import static org.junit.Assert.assertTrue;
 import java.io.File;
 import java.lang.reflect.Field;
 import java.lang.reflect.Modifier;
+import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -42,6 +43,14 @@ public class IssueCodesTest {
         assertTrue("too few codes: " + codes, codes.size() > 20);
         for (String code : codes) {
             assertTrue(code, code.matches("bt\\.[a-z0-9]+(-[a-z0-9]+)*"));
+        }
+    }
+
+    @Test
+    public void everyCodeIsDocumented() throws Exception {
+        String doc = Files.readString(new File(BtFiles.repositoryRoot(), "docs/issue-codes.md").toPath());
+        for (String code : codes()) {
+            assertTrue(code + " is not in docs/issue-codes.md", doc.contains("| `" + code + "` |"));
         }
     }
 

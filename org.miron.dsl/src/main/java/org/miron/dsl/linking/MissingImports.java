@@ -2,7 +2,6 @@ package org.miron.dsl.linking;
 
 import java.io.File;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -10,6 +9,7 @@ import java.util.Map;
 import java.util.Set;
 
 import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.EReference;
 import org.eclipse.emf.ecore.resource.Resource;
@@ -17,37 +17,46 @@ import org.eclipse.xtext.naming.QualifiedName;
 import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceSet;
-import org.eclipse.xtext.util.IResourceScopeCache;
-import org.eclipse.xtext.util.Tuples;
 import org.miron.dsl.roqme.Import;
 import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.util.Imports;
 
 import com.google.inject.Inject;
 import com.google.inject.Provider;
+import com.google.inject.Singleton;
 
 /**
  * Finds the import that would make an unknown name visible: a file in the same folder, not yet
  * imported, that declares the name. {@code b.x} with no import aliased {@code b} is found in a
  * .bt/.roqme/.miron file declaring {@code x} ({@code import "f" as b}, MIRoN only) or in a RoQME
  * file with namespace {@code b}; a plain {@code x} in a file without namespace, or with one (then
- * written {@code Ns.x}). Sibling files are parsed once per state of the importing file, in a
- * resource set of their own, so nothing is added to the one being validated.
+ * written {@code Ns.x}). Sibling files are read from disk, each parsed in a resource set of its
+ * own (nothing is added to the one being validated), and what they declare is remembered per
+ * file path, modification time and size, so many models in one folder parse each sibling once.
  */
+@Singleton
 public class MissingImports {
+    /** Files whose declarations are remembered; beyond this the oldest are parsed again if needed. */
+    private static final int REMEMBERED = 512;
 
     /** The import line to add, and how the reference is written once it is there. */
     public record Fix(String importLine, String reference) {
     }
 
-    /** What a sibling file declares: its local names, and its namespace (empty when none). */
-    private record Declarations(QualifiedName namespace, List<IEObjectDescription> names) {
+    /** A name a file declares and the kind of element it names. */
+    private record Declared(QualifiedName name, EClass type) {
     }
 
-    private static final Declarations NONE = new Declarations(QualifiedName.EMPTY, List.of());
+    /** What a sibling file declares: its namespace (empty when none) and its local names. */
+    private record Declarations(long modified, long size, QualifiedName namespace, List<Declared> names) {
+    }
 
-    @Inject
-    private IResourceScopeCache cache;
+    private final Map<File, Declarations> remembered = new LinkedHashMap<>(16, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<File, Declarations> eldest) {
+            return size() > REMEMBERED;
+        }
+    };
 
     @Inject
     private Provider<XtextResourceSet> resourceSets;
@@ -73,23 +82,23 @@ public class MissingImports {
                 aliases.add(Imports.aliasOf(imp));
             }
         }
-        boolean canAlias = "miron".equals(resource.getURI().fileExtension());
-        Map<URI, Declarations> siblings = siblings(resource);
-        for (Map.Entry<URI, Declarations> sibling : siblings.entrySet()) {
-            if (imported.contains(sibling.getKey())) {
+        boolean miron = "miron".equals(resource.getURI().fileExtension());
+        for (File sibling : siblings(resource.getURI(), miron)) {
+            URI uri = URI.createFileURI(sibling.getAbsolutePath());
+            if (imported.contains(uri)) {
                 continue;
             }
-            String file = "import \"" + sibling.getKey().lastSegment() + "\"";
-            Declarations d = sibling.getValue();
-            for (IEObjectDescription name : d.names()) {
-                if (!reference.getEReferenceType().isSuperTypeOf(name.getEClass())) {
+            String file = "import \"" + sibling.getName() + "\"";
+            Declarations d = declarations(sibling);
+            for (Declared declared : d.names()) {
+                if (!reference.getEReferenceType().isSuperTypeOf(declared.type())) {
                     continue;
                 }
-                QualifiedName local = name.getName();
+                QualifiedName local = declared.name();
                 if (d.namespace().append(local).equals(wanted)) {
                     return new Fix(file, write(wanted, delimiter));
                 }
-                if (wanted.getSegmentCount() > 1 && canAlias && !aliases.contains(wanted.getFirstSegment())
+                if (wanted.getSegmentCount() > 1 && miron && !aliases.contains(wanted.getFirstSegment())
                         && local.equals(wanted.skipFirst(1))) {
                     return new Fix(file + " as " + wanted.getFirstSegment(), write(wanted, delimiter));
                 }
@@ -105,47 +114,59 @@ public class MissingImports {
         return String.join(delimiter, name.getSegments());
     }
 
-    /** The importable files next to a resource and what they declare, sorted by name. */
-    private Map<URI, Declarations> siblings(Resource resource) {
-        return cache.get(Tuples.pair(MissingImports.class, "siblings"), resource, () -> {
-            Map<URI, Declarations> result = new LinkedHashMap<>();
-            File folder = new File(resource.getURI().toFileString()).getParentFile();
-            File[] files = folder == null ? null : folder.listFiles();
-            if (files == null) {
-                return result;
+    /** The importable files next to a file, sorted by name. */
+    private static List<File> siblings(URI uri, boolean miron) {
+        File self = new File(uri.toFileString());
+        File[] files = self.getParentFile() == null ? null : self.getParentFile().listFiles();
+        if (files == null) {
+            return List.of();
+        }
+        Set<String> importable = miron ? Set.of("bt", "roqme", "miron") : Set.of("roqme");
+        List<File> result = new ArrayList<>();
+        for (File f : files) {
+            String name = f.getName();
+            String extension = name.substring(name.lastIndexOf('.') + 1);
+            if (f.isFile() && importable.contains(extension) && !f.equals(self)) {
+                result.add(f);
             }
-            Set<String> importable = "miron".equals(resource.getURI().fileExtension())
-                    ? Set.of("bt", "roqme", "miron") : Set.of("roqme");
-            Arrays.sort(files);
-            XtextResourceSet set = resourceSets.get();
-            for (File f : files) {
-                URI uri = URI.createFileURI(f.getAbsolutePath());
-                if (f.isFile() && importable.contains(uri.fileExtension()) && !uri.equals(resource.getURI())) {
-                    result.put(uri, declarations(set, uri));
-                }
-            }
-            return result;
-        });
+        }
+        result.sort(null);
+        return result;
     }
 
-    private static Declarations declarations(XtextResourceSet set, URI uri) {
+    private synchronized Declarations declarations(File file) {
+        Declarations known = remembered.get(file);
+        if (known != null && known.modified() == file.lastModified() && known.size() == file.length()) {
+            return known;
+        }
+        Declarations read = read(file);
+        remembered.put(file, read);
+        return read;
+    }
+
+    private Declarations read(File file) {
+        long modified = file.lastModified();
+        long size = file.length();
+        URI uri = URI.createFileURI(file.getAbsolutePath());
         try {
-            Resource sibling = set.getResource(uri, true);
+            Resource sibling = resourceSets.get().getResource(uri, true);
             IResourceServiceProvider provider = IResourceServiceProvider.Registry.INSTANCE
                     .getResourceServiceProvider(uri);
             if (sibling == null || provider == null || sibling.getContents().isEmpty()) {
-                return NONE;
+                return new Declarations(modified, size, QualifiedName.EMPTY, List.of());
             }
             EObject root = sibling.getContents().get(0);
             QualifiedName namespace = root instanceof RoqmeModel && ((RoqmeModel) root).getNamespace() != null
                     ? QualifiedName.create(((RoqmeModel) root).getNamespace().split("\\.")) : QualifiedName.EMPTY;
-            List<IEObjectDescription> names = new ArrayList<>();
-            provider.getResourceDescriptionManager().getResourceDescription(sibling).getExportedObjects()
-                    .forEach(names::add);
-            return new Declarations(namespace, names);
+            List<Declared> names = new ArrayList<>();
+            for (IEObjectDescription d : provider.getResourceDescriptionManager().getResourceDescription(sibling)
+                    .getExportedObjects()) {
+                names.add(new Declared(d.getName(), d.getEClass()));
+            }
+            return new Declarations(modified, size, namespace, names);
         } catch (RuntimeException e) {
             // an unreadable sibling offers no import; it is not the file being checked
-            return NONE;
+            return new Declarations(modified, size, QualifiedName.EMPTY, List.of());
         }
     }
 }

@@ -57,6 +57,16 @@ public class IssueCodesTest {
     }
 
     @Test
+    public void everyCodeIsDocumented() throws Exception {
+        String doc = Files.readString(new File(Models.root(), "docs/issue-codes.md").toPath());
+        Set<String> codes = new HashSet<>(codes(RoqmeIssueCodes.class));
+        codes.addAll(codes(MironIssueCodes.class));
+        for (String code : codes) {
+            assertTrue(code + " is not in docs/issue-codes.md", doc.contains("| `" + code + "` |"));
+        }
+    }
+
+    @Test
     public void everyIssueOfEveryInvalidModelHasACodeOfItsLanguage() throws Exception {
         Set<String> roqme = codes(RoqmeIssueCodes.class);
         Set<String> miron = new HashSet<>(roqme);
