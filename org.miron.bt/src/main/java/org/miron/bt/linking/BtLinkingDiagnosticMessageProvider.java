@@ -17,7 +17,8 @@ import com.google.inject.Inject;
 
 /**
  * Says what a user must fix when a reference (a SubTree ID) names nothing, with a stable code and,
- * as issue data, the visible names closest to the one written (for a "did you mean" quick fix).
+ * as issue data, what a quick fix needs: the include to add when a file next to this one defines
+ * the tree, else the visible names closest to the one written ("did you mean").
  */
 public class BtLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
 
@@ -27,13 +28,19 @@ public class BtLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessage
     @Inject
     private IQualifiedNameConverter nameConverter;
 
+    @Inject
+    private MissingIncludes missingIncludes;
+
     @Override
     public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
         String[] closest = closest(context);
         if (context.getReference() == BtPackage.Literals.SUBTREE_NODE__BEHAVIOR_TREE) {
-            return new DiagnosticMessage("unknown SubTree ID '" + context.getLinkText()
-                    + "': no BehaviorTree with this ID in this file or the files it includes",
-                    Severity.ERROR, BtIssueCodes.UNKNOWN_SUBTREE, closest);
+            String message = "unknown SubTree ID '" + context.getLinkText()
+                    + "': no BehaviorTree with this ID in this file or the files it includes";
+            String include = missingIncludes.find(context.getContext().eResource(), context.getLinkText());
+            return include != null
+                    ? new DiagnosticMessage(message, Severity.ERROR, BtIssueCodes.MISSING_INCLUDE, include)
+                    : new DiagnosticMessage(message, Severity.ERROR, BtIssueCodes.UNKNOWN_SUBTREE, closest);
         }
         DiagnosticMessage message = super.getUnresolvedProxyMessage(context);
         return new DiagnosticMessage(message.getMessage(), message.getSeverity(), BtIssueCodes.UNKNOWN_REFERENCE,

@@ -16,6 +16,11 @@ public final class BtIssueCodes {
     public static final String SYNTAX_ERROR = "bt.syntax-error";
     /** A SubTree ID names no tree. Data: the closest visible tree IDs, nearest first (may be empty). */
     public static final String UNKNOWN_SUBTREE = "bt.unknown-subtree";
+    /**
+     * A SubTree ID that no visible tree has, but a .bt file in the same folder, not included yet,
+     * defines. Data: the include to add, e.g. {@code <include path="nav.bt"/>}.
+     */
+    public static final String MISSING_INCLUDE = "bt.missing-include";
     /** Any other unresolved reference. Data: the closest visible names, nearest first. */
     public static final String UNKNOWN_REFERENCE = "bt.unknown-reference";
 

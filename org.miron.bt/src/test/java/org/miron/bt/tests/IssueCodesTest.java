@@ -16,7 +16,9 @@ import java.util.Set;
 import java.util.stream.Collectors;
 
 import org.eclipse.xtext.validation.Issue;
+import org.junit.Rule;
 import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
 import org.miron.bt.validation.BtIssueCodes;
 
 /**
@@ -25,6 +27,9 @@ import org.miron.bt.validation.BtIssueCodes;
  */
 public class IssueCodesTest {
     private static final File INVALID = new File(BtFiles.RESOURCES, "invalid");
+
+    @Rule
+    public TemporaryFolder temp = new TemporaryFolder();
 
     /** The values of BtIssueCodes' public string constants, read by reflection. */
     static Set<String> codes() throws IllegalAccessException {
@@ -103,6 +108,20 @@ public class IssueCodesTest {
     public void aSubtreeIdFarFromEveryTreeSuggestsNothing() {
         Issue issue = only(new File(INVALID, "unknown_subtree.bt"), BtIssueCodes.UNKNOWN_SUBTREE);
         assertEquals(0, issue.getData() == null ? 0 : issue.getData().length);
+    }
+
+    @Test
+    public void aTreeDefinedInAFileNextToItNamesTheInclude() throws Exception {
+        File folder = temp.newFolder("trees");
+        Files.writeString(new File(folder, "nav.bt").toPath(),
+                "<root><BehaviorTree ID=\"Navigate\"><AlwaysSuccess/></BehaviorTree></root>");
+        File main = new File(folder, "main.bt");
+        Files.writeString(main.toPath(),
+                "<root><BehaviorTree ID=\"Main\"><SubTree ID=\"Navigate\"/></BehaviorTree></root>");
+        Issue issue = only(main, BtIssueCodes.MISSING_INCLUDE);
+        assertEquals("unknown SubTree ID 'Navigate': no BehaviorTree with this ID in this file or the files it includes",
+                issue.getMessage());
+        assertArrayEquals(new String[] { "<include path=\"nav.bt\"/>" }, issue.getData());
     }
 
     @Test
