@@ -63,8 +63,8 @@ public class BtValidator extends AbstractBtValidator {
             }
         } else if (!visible.containsKey(main)) {
             error("main_tree_to_execute '" + main + "' names no BehaviorTree of this file or its includes",
-                    attribute(model.getAttributes(), "main_tree_to_execute"), BT.getAttribute_Value(), UNKNOWN_MAIN_TREE,
-                    Suggestions.closest(main, visible.keySet()).toArray(new String[0]));
+                    attribute(model.getAttributes(), "main_tree_to_execute"), BT.getAttribute_Value(),
+                    UNKNOWN_MAIN_TREE, Suggestions.closest(main, visible.keySet()).toArray(new String[0]));
         }
     }
 
@@ -221,7 +221,8 @@ public class BtValidator extends AbstractBtValidator {
         checkInteger(node, "num_attempts", true, -1);
         if ("RetryUntilSuccesful".equals(node.getTag())) {
             warning("RetryUntilSuccesful is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load "
-                    + "RetryUntilSuccessful", node, BT.getTreeNode_Tag(), RETRY_OLD_SPELLING, "RetryUntilSuccessful");
+                    + "RetryUntilSuccessful", node, BT.getTreeNode_Tag(), RETRY_OLD_SPELLING,
+                    "RetryUntilSuccessful");
         }
     }
 
@@ -240,7 +241,8 @@ public class BtValidator extends AbstractBtValidator {
     @Check
     public void checkFallbackStar(FallbackStar node) {
         warning("FallbackStar is not registered in BehaviorTree.CPP 3; write Fallback (or ReactiveFallback) "
-                + "for files that must load there", node, BT.getTreeNode_Tag(), FALLBACK_STAR, "Fallback", "ReactiveFallback");
+                + "for files that must load there", node, BT.getTreeNode_Tag(), FALLBACK_STAR,
+                "Fallback", "ReactiveFallback");
     }
 
     @Check
@@ -300,7 +302,8 @@ public class BtValidator extends AbstractBtValidator {
         }
         if (!BtTrees.declaredNodeIds(model.getNodesmodel()).contains(node.getTag())) {
             warning("<" + node.getTag() + "/> is neither a BehaviorTree nor declared in TreeNodesModel; "
-                    + "it must be registered in the executor", node, BT.getTreeNode_Tag(), UNDECLARED_NODE, node.getTag());
+                    + "it must be registered in the executor", node, BT.getTreeNode_Tag(), UNDECLARED_NODE,
+                    node.getTag());
         }
     }
 
@@ -322,13 +325,15 @@ public class BtValidator extends AbstractBtValidator {
         int children = node.getNodes().size();
         if (kind == null) {
             warning("<" + node.getTag() + "> is not declared in TreeNodesModel; it must be registered in the "
-                    + "executor as a control node", node, BT.getTreeNode_Tag(), UNDECLARED_NODE, node.getTag());
+                    + "executor as a control node", node, BT.getTreeNode_Tag(), UNDECLARED_NODE,
+                    node.getTag());
         } else if (kind.equals("Decorator") && children != 1) {
             error("<" + node.getTag() + "> is declared as a Decorator in TreeNodesModel and needs exactly one child, it has "
                     + children, node.getNodes().get(1), null, DECORATOR_CHILD_COUNT);
         } else if (kind.equals("Action") || kind.equals("Condition")) {
             error("<" + node.getTag() + "> is declared as " + (kind.equals("Action") ? "an " : "a ") + kind
-                    + " in TreeNodesModel and cannot have children", node, BT.getTreeNode_Tag(), LEAF_WITH_CHILDREN);
+                    + " in TreeNodesModel and cannot have children", node, BT.getTreeNode_Tag(),
+                    LEAF_WITH_CHILDREN);
         }
     }
 

@@ -59,9 +59,11 @@ public class ExpressionChecks extends CheckSet {
                 break;
             }
             if (!l.isNumeric()) {
-                error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left(), OPERAND_TYPE);
+                error("'" + op + "' needs numbers, but the left operand is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isNumeric()) {
-                error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right(), OPERAND_TYPE);
+                error("'" + op + "' needs numbers, but the right operand is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
             break;
         case PLUS:
@@ -69,24 +71,30 @@ public class ExpressionChecks extends CheckSet {
         case TIMES:
         case DIVIDE:
             if (!l.isNumeric()) {
-                error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left(), OPERAND_TYPE);
+                error("'" + op + "' needs numbers, but the left operand is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isNumeric()) {
-                error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right(), OPERAND_TYPE);
+                error("'" + op + "' needs numbers, but the right operand is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
             break;
         case LOGICAL_AND:
         case LOGICAL_OR:
             if (!l.isLogical()) {
-                error("'" + op + "' needs boolean or event operands, but the left one is " + l, e, R.getBinaryExpression_Left(), OPERAND_TYPE);
+                error("'" + op + "' needs boolean or event operands, but the left one is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isLogical()) {
-                error("'" + op + "' needs boolean or event operands, but the right one is " + r, e, R.getBinaryExpression_Right(), OPERAND_TYPE);
+                error("'" + op + "' needs boolean or event operands, but the right one is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
             break;
         default: // event operators: or, and, ->
             if (!l.isEventLike()) {
-                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l, e, R.getBinaryExpression_Left(), OPERAND_TYPE);
+                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isEventLike()) {
-                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r, e, R.getBinaryExpression_Right(), OPERAND_TYPE);
+                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
         }
     }

@@ -30,7 +30,8 @@ public class CheckCommand implements Callable<Integer> {
     List<File> files;
 
     @Option(names = "--format", paramLabel = "FORMAT", defaultValue = "text",
-            description = "text (file:line:col: severity [code]: message) or json (JSON Lines); default: ${DEFAULT-VALUE}.")
+            description = "text (file:line:col: severity [code]: message) or json (JSON Lines);"
+                    + " default: ${DEFAULT-VALUE}.")
     Format format;
 
     @Spec
