@@ -10,9 +10,8 @@ final class OutputLocation {
     }
 
     /**
-     * The target's URI of fileName when it has one (file:, platform:/resource, ...); a file-system
-     * access that names files without a location (the plain in-memory one) is taken to write
-     * beside the model.
+     * The target's URI of fileName (file:, platform:/resource, memory:/DEFAULT_OUTPUT/ for the
+     * in-memory access...); a target that gives no absolute URI is taken to write beside the model.
      */
     static URI of(IFileSystemAccess2 target, String fileName, Resource model) {
         URI uri = target.getURI(fileName);
