@@ -1,9 +1,6 @@
 package org.miron.generator
 
 import com.fasterxml.jackson.core.JsonGenerator
-import com.fasterxml.jackson.core.util.DefaultIndenter
-import com.fasterxml.jackson.core.util.DefaultPrettyPrinter
-import com.fasterxml.jackson.core.util.Separators
 import com.fasterxml.jackson.databind.JsonNode
 import com.fasterxml.jackson.databind.ObjectMapper
 import com.fasterxml.jackson.databind.node.JsonNodeFactory
@@ -30,13 +27,9 @@ import org.miron.dsl.util.Types
 class IoMapGenerator {
 	static val json = JsonNodeFactory.instance
 	static val mapper = new ObjectMapper().enable(JsonGenerator.Feature.WRITE_BIGDECIMAL_AS_PLAIN)
-	/** Two-space indentation, '\n' on every platform, `"key": value`; arrays of values on one line. */
-	static val printer = new DefaultPrettyPrinter()
-		.withObjectIndenter(new DefaultIndenter("  ", "\n"))
-		.withSeparators(Separators.createDefaultInstance.withObjectFieldValueSpacing(Separators.Spacing.AFTER))
 
 	def String generate(AdaptationModel m) {
-		mapper.writer(printer).writeValueAsString(tree(m)) + "\n"
+		mapper.writer(new IoJsonPrinter).writeValueAsString(tree(m)) + "\n"
 	}
 
 	def ObjectNode tree(AdaptationModel m) {

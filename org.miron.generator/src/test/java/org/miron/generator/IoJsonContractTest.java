@@ -2,6 +2,7 @@ package org.miron.generator;
 
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -42,6 +43,18 @@ public class IoJsonContractTest {
     @Test
     public void generatedFileIsValid() throws IOException {
         assertEquals(List.of(), IoJsonSchema.problems(generateIntralogistics()));
+    }
+
+    @Test
+    public void layoutKeepsValuesOnOneLineAndObjectsApart() throws IOException {
+        Path out = temp.newFolder("layout").toPath();
+        assertEquals(0, Cli.exit("generate", Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(),
+                "-o", out.toString()));
+        String text = Files.readString(out.resolve("intralogistics.io.json"));
+        assertTrue(text, text.startsWith("{\n  \"format\": 1,\n  \"model\": \"intralogistics\",\n"));
+        assertTrue(text, text.contains("\n      \"values\": [\"pick\", \"deliver\", \"dock\", \"pickDeliverCharge\"],\n"));
+        assertTrue(text, text.contains("\n  \"varpoints\": [\n    {\n      \"name\": \"task\",\n"));
+        assertTrue(text, text.endsWith("\n    }\n  ]\n}\n"));
     }
 
     @Test
