@@ -54,6 +54,8 @@ class BtWeaver {
 	/** Where the woven tree will be written: includes are relative to it. */
 	val URI wovenTree
 	val factory = BtFactory.eINSTANCE
+	/** Originals to their copies in the woven tree: variant calls point at the copies when there are. */
+	var EcoreUtil.Copier copier
 
 	new(List<GenerationError> errors, URI wovenTree) {
 		this.errors = errors
@@ -78,7 +80,7 @@ class BtWeaver {
 			targets.put(vp, selected)
 			selected.forEach[woven += eResource]
 		}
-		val copier = new EcoreUtil.Copier
+		copier = new EcoreUtil.Copier
 		val copies = woven.map[copier.copy(contents.head) as BTModel].toList
 		copier.copyReferences
 
@@ -337,7 +339,7 @@ class BtWeaver {
 	def private subtree(BehaviorTree tree) {
 		val node = factory.createSubtreePlus
 		node.tag = "SubTreePlus"
-		node.behaviorTree = tree
+		node.behaviorTree = copier.get(tree) as BehaviorTree ?: tree
 		node
 	}
 
