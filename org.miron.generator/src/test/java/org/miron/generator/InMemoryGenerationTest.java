@@ -13,6 +13,7 @@ import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.generator.GeneratorContext;
+import org.eclipse.xtext.generator.GeneratorDelegate;
 import org.eclipse.xtext.generator.InMemoryFileSystemAccess;
 import org.eclipse.xtext.resource.XtextResourceSet;
 import org.eclipse.xtext.util.StringInputStream;
@@ -119,6 +120,16 @@ public class InMemoryGenerationTest {
         assertEquals("../../models/lib/extra.bt", generate("inmemory:/", locatedAt("inmemory:/gen/robot/")));
         assertEquals("lib/extra.bt", generate("inmemory:/", locatedAt("inmemory:/models/")));
         assertEquals("../models/lib/extra.bt", generate("platform:/resource/robot/", locatedAt("platform:/resource/robot/src-gen/")));
+    }
+
+    @Test
+    public void runsThroughXtextsGeneratorDelegate() throws IOException {
+        GeneratorDelegate delegate = MironStandaloneSetup.doSetup().createChildInjector(new MironGeneratorModule())
+                .getInstance(GeneratorDelegate.class);
+        InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
+        delegate.generate(models("memory:/", MODEL), fsa, new GeneratorContext());
+        assertEquals(4, fsa.getTextFiles().size());
+        assertEquals("../models/lib/extra.bt", include(file(fsa, "model.ext.xml")));
     }
 
     @Test
