@@ -51,6 +51,11 @@ class MironGenerator extends AbstractGenerator {
 		val treeFile = name + ".ext.xml"
 		val treeLocation = OutputLocation.of(target, treeFile, input)
 		val tree = new BtWeaver(errors, treeLocation).weave(m)
+		if (!errors.empty) {
+			// All errors are known by now (the printers report none): nothing will be written, and a
+			// broken tree may not even serialize.
+			return new StagedGeneration(files, errors)
+		}
 		if (tree !== null) {
 			m.tree = treeFile
 			files.generateFile(treeFile, new WovenTreePrinter().print(tree, treeLocation, input.resourceSet,
