@@ -46,6 +46,15 @@ public class IoJsonContractTest {
     }
 
     @Test
+    public void exampleOfTheDocumentationIsValid() throws IOException {
+        String doc = Files.readString(Cli.ROOT.resolve("docs/io-json.md"));
+        int start = doc.indexOf("```json\n") + "```json\n".length();
+        assertTrue("docs/io-json.md has a ```json example", start > "```json\n".length() - 1);
+        String example = doc.substring(start, doc.indexOf("```", start));
+        assertEquals(List.of(), IoJsonSchema.problems(example));
+    }
+
+    @Test
     public void layoutKeepsValuesOnOneLineAndObjectsApart() throws IOException {
         Path out = temp.newFolder("layout").toPath();
         assertEquals(0, Cli.exit("generate", Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(),
