@@ -50,6 +50,11 @@ public final class Broker implements AutoCloseable {
         return cache.size();
     }
 
+    /** Messages forwarded but refused by the cache as invalid (diagnostics, tests). */
+    public long refusedByCache() {
+        return bus == null ? 0 : bus.refused();
+    }
+
     @Override
     public void close() {
         if (requests != null) {

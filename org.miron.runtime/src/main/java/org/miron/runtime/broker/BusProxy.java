@@ -2,7 +2,9 @@ package org.miron.runtime.broker;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.nio.charset.StandardCharsets;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
@@ -32,6 +34,7 @@ final class BusProxy implements Runnable {
     private ZMQ.Socket xsub;
     private ZMQ.Socket xpub;
     private volatile boolean running = true;
+    private final AtomicLong refused = new AtomicLong();
 
     BusProxy(ZContext ctx, String inEndpoint, String outEndpoint, LastValueCache cache) {
         this.ctx = ctx;
@@ -50,6 +53,11 @@ final class BusProxy implements Runnable {
         xsub.bind(inEndpoint);
         xpub.bind(outEndpoint);
         xsub.send(new byte[] {1}); // subscribe to all topics; XSUB repeats it to every new publisher
+    }
+
+    /** Messages forwarded but not cached because they were invalid. */
+    long refused() {
+        return refused.get();
     }
 
     void stop() {
@@ -86,7 +94,11 @@ final class BusProxy implements Runnable {
         for (ZFrame f : msg) {
             frames.add(f.getData());
         }
-        cache.put(frames);
+        if (!cache.put(frames) && refused.incrementAndGet() % 1000 == 1) {
+            // forwarded all the same: subscribers count bad input themselves
+            LOG.warning("bus: not caching an invalid message on " + new String(frames.get(0), StandardCharsets.UTF_8)
+                    + " (" + refused.get() + " refused so far)");
+        }
         send(xpub, frames);
         return true;
     }

@@ -2,6 +2,7 @@ package org.miron.runtime.broker;
 
 import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
@@ -130,9 +131,9 @@ public class BrokerTest {
         cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"safety\",\"value\":0.1}".getBytes()));
         cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"power\",\"value\":0.2}".getBytes()));
         cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"safety\",\"value\":0.3}".getBytes()));
-        cache.put(List.of("roqme.estimate".getBytes(), "not json".getBytes()));
+        assertFalse("invalid messages are not cached", cache.put(List.of("roqme.estimate".getBytes(), "not json".getBytes())));
         List<List<byte[]>> all = cache.matching("roqme.".getBytes());
-        assertEquals(3, all.size());
+        assertEquals(2, all.size());
         assertEquals("{\"name\":\"power\",\"value\":0.2}", new String(all.get(0).get(1)));
         assertEquals("{\"name\":\"safety\",\"value\":0.3}", new String(all.get(1).get(1)));
         assertTrue(cache.matching("roqme.estimateX".getBytes()).isEmpty());
