@@ -100,9 +100,15 @@ public final class Engine implements AutoCloseable {
 
     private void solveLoop() {
         long seen = 0;
+        SolveRetry retry = new SolveRetry(options.solveRetryMinMs, options.solveRetryMaxMs);
         while (running) {
             try {
-                InputState.Snapshot snap = state.awaitChange(seen, 200);
+                InputState.Snapshot snap = state.awaitChange(seen, retry.waitMs(200));
+                if (snap == null && retry.due()) {
+                    snap = state.snapshot(); // same inputs, the last solve failed: try again
+                    status.count("solveRetries");
+                    LOG.info("retrying the failed solve on unchanged inputs");
+                }
                 if (snap == null) {
                     heartbeat();
                     continue;
@@ -111,6 +117,7 @@ public final class Engine implements AutoCloseable {
                 SolveResult r = backend.solve(snap.params());
                 if (running) {
                     handle(r, snap);
+                    retry.after(r);
                 }
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();

@@ -20,6 +20,9 @@ public final class EngineOptions {
     public long backoffMaxMs = 5000;
     /** miron.status is also re-published this often when nothing happens (a heartbeat). */
     public long statusIntervalMs = 5000;
+    /** After a solver timeout or crash the same inputs are solved again after this delay, doubling up to the max. */
+    public long solveRetryMinMs = 500;
+    public long solveRetryMaxMs = 10_000;
 
     public EngineOptions(Path ioJson) {
         this.ioJson = ioJson;
