@@ -8,7 +8,9 @@ import picocli.CommandLine.Option;
 
 /** {@code miron broker}: request path to the skill interface and the bus with last-value cache. */
 @Command(name = "broker", mixinStandardHelpOptions = true,
-        description = "Run the MIRoN broker: ROUTER/DEALER request path and XSUB/XPUB bus with last-value cache.")
+        description = "Run the MIRoN broker: ROUTER/DEALER request path and XSUB/XPUB bus with last-value cache.",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = { ExitCodes.STARTUP, ExitCodes.SIGTERM, ExitCodes.SIGINT })
 public final class BrokerCommand implements Callable<Integer> {
     @Option(names = "--request", description = "ROUTER endpoint for REQ clients (default: ${DEFAULT-VALUE})")
     String request = Endpoints.DEFAULT_REQUEST;

@@ -19,9 +19,9 @@ import picocli.CommandLine.Parameters;
 @Command(name = "execute", mixinStandardHelpOptions = true,
         description = "Run a behaviour tree (.bt or woven .ext.xml): VariantAction nodes follow the engine's "
                 + "decisions, other actions are pushed as skills to the skill interface; prints a trace.",
-        exitCodeListHeading = "Exit codes:%n",
+        exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = { "0:the tree succeeded", "1:the tree failed", "2:the tree cannot be loaded",
-                "3:stopped (SIGTERM/Ctrl-C) while running" })
+                ExitCodes.SIGTERM + " while running", ExitCodes.SIGINT + " while running" })
 public final class ExecuteCommand implements Callable<Integer> {
     @Parameters(paramLabel = "TREE", description = "the tree file")
     Path treeFile;
@@ -75,6 +75,7 @@ public final class ExecuteCommand implements Callable<Integer> {
                 finished.countDown();
             }
             System.out.println("tree " + executor.tree().id() + " finished: " + status);
+            // RUNNING: stopped by a signal; the JVM then exits with the signal's status (ExitCodes)
             return status == NodeStatus.SUCCESS ? 0 : status == NodeStatus.FAILURE ? 1 : 3;
         }
     }
