@@ -50,6 +50,11 @@ public final class Broker implements AutoCloseable {
         return cache.size();
     }
 
+    /** This run's epoch, announced on {@code miron.broker.hello}; a new epoch means a restarted broker. */
+    public String epoch() {
+        return bus.epoch();
+    }
+
     /** Messages forwarded but refused by the cache as invalid (diagnostics, tests). */
     public long refusedByCache() {
         return bus == null ? 0 : bus.refused();

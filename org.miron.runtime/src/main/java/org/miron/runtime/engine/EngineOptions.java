@@ -23,6 +23,11 @@ public final class EngineOptions {
     /** After a solver timeout or crash the same inputs are solved again after this delay, doubling up to the max. */
     public long solveRetryMinMs = 500;
     public long solveRetryMaxMs = 10_000;
+    /**
+     * Longest wait for the broker's last-value replay before the first solve (settle time); the
+     * replay normally completes within milliseconds, this only bounds the wait without a broker.
+     */
+    public long settleMs = 1000;
 
     public EngineOptions(Path ioJson) {
         this.ioJson = ioJson;
