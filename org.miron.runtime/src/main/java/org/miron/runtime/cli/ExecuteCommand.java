@@ -4,6 +4,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.time.ZoneId;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.miron.runtime.Endpoints;
@@ -11,6 +13,7 @@ import org.miron.runtime.executor.BtBuildException;
 import org.miron.runtime.executor.ConsoleTracePrinter;
 import org.miron.runtime.executor.NodeStatus;
 import org.miron.runtime.live.LiveExecutor;
+import org.miron.runtime.skill.SkillDeadlines;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -44,6 +47,11 @@ public final class ExecuteCommand implements Callable<Integer> {
     @Option(names = "--bus-out", description = "broker XPUB with the engine's decisions (default: ${DEFAULT-VALUE})")
     String busOut = Endpoints.DEFAULT_BUS_OUT;
 
+    @Option(names = "--skill-deadline", paramLabel = "SKILL=MS",
+            description = "result deadline of a pushed skill (repeatable; * for the others; default 120000): "
+                    + "without a result by then the node fails and the skill is aborted")
+    Map<String, Long> skillDeadlines = new LinkedHashMap<>();
+
     @Override
     public Integer call() {
         if (!Files.isRegularFile(treeFile)) {
@@ -52,6 +60,12 @@ public final class ExecuteCommand implements Callable<Integer> {
         }
         Endpoints endpoints = new Endpoints(request, Endpoints.DEFAULT_SKILL, skillEvents, busIn, busOut);
         try (LiveExecutor executor = new LiveExecutor(endpoints)) {
+            try {
+                executor.skillDeadlines(new SkillDeadlines(skillDeadlines));
+            } catch (IllegalArgumentException e) {
+                System.err.println("miron execute: error: " + e.getMessage());
+                return 2;
+            }
             try {
                 executor.build(treeFile, new ConsoleTracePrinter(System.out, ZoneId.systemDefault(), showResets));
             } catch (BtBuildException e) {

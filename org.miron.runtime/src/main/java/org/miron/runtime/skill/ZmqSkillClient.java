@@ -25,27 +25,61 @@ import org.zeromq.ZMQ;
  * spoke to ComponentSkillInterface: push-skill and abort-current-skill requests go through the
  * broker's request path (acked, retried, never blocking the tick), and skill-result messages are
  * read from the skill interface's PUB socket and matched to the pushed skill by id.
+ *
+ * <p>A result can be lost: the skill interface dies, or is restarted, while the skill runs. So a
+ * pushed skill ends with ERROR (its node FAILS and the tree decides, e.g. a RetryUntilSuccessful
+ * pushes it again) when
+ * <ul>
+ * <li>its {@link SkillDeadlines deadline} passes (an abort-current-skill is sent too, so the robot
+ *     does not keep doing what the tree gave up), or</li>
+ * <li>the results connection drops after the interface acknowledged the push: a socket monitor on
+ *     the results SUB reports the disconnection of an established (handshaken) link, and a PUB
+ *     does not keep results for a subscriber that is away. Pushes not yet acknowledged keep
+ *     waiting: the request is retried and reaches the restarted interface.</li>
+ * </ul>
+ * The skill is not pushed again automatically: it may have half run (a GoTo), so whether to
+ * repeat a physical action is the tree's decision.
  */
 public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     private static final Logger LOG = Logger.getLogger(ZmqSkillClient.class.getName());
 
     private final RequestSender requests;
     private final String resultsEndpoint;
-    private final Map<Long, CompletableFuture<SkillResult>> pending = new ConcurrentHashMap<>();
+    /** A pushed skill waiting for its result. */
+    private static final class Pending {
+        final String skill;
+        final CompletableFuture<SkillResult> result = new CompletableFuture<>();
+        final long deadlineNanos;
+        volatile boolean acked;
+
+        Pending(String skill, long deadlineMs) {
+            this.skill = skill;
+            this.deadlineNanos = System.nanoTime() + deadlineMs * 1_000_000L;
+        }
+    }
+
+    private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+    private final SkillDeadlines deadlines;
     // Ids start from the clock so that two executor runs never reuse an id the interface may still know.
     private final AtomicLong nextId = new AtomicLong(System.currentTimeMillis() * 1000);
     private final ZContext ctx = Contexts.create();
     private final Thread resultsThread;
     private volatile boolean running = true;
     private volatile long malformed;
+    private volatile long failedByFault;
 
     /**
      * @param requestEndpoint  the broker's ROUTER (or the skill interface's REP directly)
      * @param resultsEndpoint  the skill interface's PUB, where skill results appear
      */
     public ZmqSkillClient(String requestEndpoint, String resultsEndpoint, long ackTimeoutMs) {
+        this(requestEndpoint, resultsEndpoint, ackTimeoutMs, SkillDeadlines.defaults());
+    }
+
+    public ZmqSkillClient(String requestEndpoint, String resultsEndpoint, long ackTimeoutMs, SkillDeadlines deadlines) {
+        this.deadlines = deadlines;
         this.requests = new RequestSender(requestEndpoint, "executor-skills", ackTimeoutMs, 100, 2000,
-                new LoggingListener());
+                new AckListener());
         this.resultsEndpoint = resultsEndpoint;
         this.resultsThread = new Thread(this::readResults, "executor-skill-results");
         this.resultsThread.setDaemon(true);
@@ -60,8 +94,9 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     @Override
     public SkillHandle pushSkill(SkillRequest request) {
         long id = nextId.getAndIncrement();
-        CompletableFuture<SkillResult> result = new CompletableFuture<>();
-        pending.put(id, result);
+        Pending p = new Pending(request.name(), deadlines.forSkill(request.name()));
+        CompletableFuture<SkillResult> result = p.result;
+        pending.put(id, p);
         result.whenComplete((r, e) -> pending.remove(id));
         requests.submit("push-skill " + id, pushSkillMessage(id, request));
         return SkillHandle.of(result, () -> {
@@ -92,22 +127,69 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     }
 
     private void readResults() {
-        try (ZMQ.Socket sub = ctx.createSocket(SocketType.SUB)) {
+        String monitorAddress = "inproc://skill-results-monitor-" + Integer.toHexString(System.identityHashCode(this));
+        try (ZMQ.Socket sub = ctx.createSocket(SocketType.SUB); ZMQ.Socket monitor = ctx.createSocket(SocketType.PAIR)) {
             sub.setLinger(0);
             sub.subscribe(new byte[0]);
+            sub.monitor(monitorAddress, ZMQ.EVENT_HANDSHAKE_PROTOCOL | ZMQ.EVENT_DISCONNECTED);
+            monitor.connect(monitorAddress);
             Connect.connect(sub, resultsEndpoint);
             sub.setReceiveTimeOut(100);
+            boolean established = false;
             while (running) {
                 byte[] frame = sub.recv();
                 if (frame != null) {
                     onResult(frame);
                 }
+                ZMQ.Event event;
+                while ((event = ZMQ.Event.recv(monitor, ZMQ.DONTWAIT)) != null) {
+                    if (event.getEvent() == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
+                        established = true;
+                    } else if (event.getEvent() == ZMQ.EVENT_DISCONNECTED && established) {
+                        // a stalled handshake also disconnects; only a link that was up loses results
+                        established = false;
+                        failAcknowledged("the skill interface went away (results connection lost); its result is lost");
+                    }
+                }
+                expireDeadlines();
             }
         } catch (RuntimeException e) {
             if (running) {
                 LOG.severe("skill results reader stopped: " + e);
             }
         }
+    }
+
+    private void failAcknowledged(String why) {
+        pending.values().stream().filter(p -> p.acked).forEach(p -> fail(p, why));
+    }
+
+    private void expireDeadlines() {
+        long now = System.nanoTime();
+        for (Pending p : pending.values()) {
+            if (now - p.deadlineNanos >= 0 && fail(p, "no result within " + deadlines.forSkill(p.skill) + " ms")) {
+                requests.submit("abort-current-skill", abortMessage(nextId.getAndIncrement()));
+            }
+        }
+    }
+
+    private boolean fail(Pending p, String why) {
+        boolean failed = p.result.complete(new SkillResult(SkillResult.Outcome.ERROR, why, Map.of()));
+        if (failed) {
+            failedByFault++;
+            LOG.warning("skill " + p.skill + " failed: " + why);
+        }
+        return failed;
+    }
+
+    /** Pushed skills ended with ERROR because their deadline passed or the skill interface went away. */
+    public long failedByFault() {
+        return failedByFault;
+    }
+
+    /** Pushed skills acknowledged by the skill interface and still waiting for their result. */
+    public long acknowledgedRunning() {
+        return pending.values().stream().filter(p -> p.acked && !p.result.isDone()).count();
     }
 
     /** Completes the pushed skill a skill-result message names; anything else is counted and dropped. */
@@ -123,7 +205,8 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
             LOG.warning("ignored a message on the skill-result socket that is not a skill-result");
             return;
         }
-        CompletableFuture<SkillResult> result = pending.get(message.path("id").asLong(-1));
+        Pending p = pending.get(message.path("id").asLong(-1));
+        CompletableFuture<SkillResult> result = p == null ? null : p.result;
         if (result == null) {
             return; // a skill of another client, or one this client already gave up
         }
@@ -155,16 +238,21 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
             Thread.currentThread().interrupt();
         }
         ctx.close();
-        pending.values().forEach(f -> f.complete(SkillResult.of(SkillResult.Outcome.ABORT)));
+        pending.values().forEach(p -> p.result.complete(SkillResult.of(SkillResult.Outcome.ABORT)));
     }
 
-    private static final class LoggingListener implements RequestSender.Listener {
+    /** Marks acknowledged pushes (their result is now the interface's to send) and logs retries. */
+    private final class AckListener implements RequestSender.Listener {
         @Override
         public void sent(String key, ObjectNode message) {
         }
 
         @Override
         public void acked(String key, ObjectNode message) {
+            Pending p = pending.get(message.path("id").asLong(-1));
+            if (p != null && "push-skill".equals(message.path("msg-type").asText())) {
+                p.acked = true;
+            }
         }
 
         @Override
