@@ -1,8 +1,9 @@
 package org.miron.runtime.broker;
 
+import java.nio.charset.StandardCharsets;
+import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
@@ -40,8 +41,9 @@ final class BusProxy implements Runnable {
     private final String inEndpoint;
     private final String outEndpoint;
     private final LastValueCache cache;
+    // unique per broker run: subscribers tell a restarted broker by it
     private final String epoch = Long.toHexString(System.currentTimeMillis()) + "-"
-            + Long.toHexString(new java.security.SecureRandom().nextLong() & Long.MAX_VALUE);
+            + Long.toHexString(new SecureRandom().nextLong() & Long.MAX_VALUE);
     private ZMQ.Socket xsub;
     private ZMQ.Socket xpub;
     private volatile boolean running = true;

@@ -68,10 +68,10 @@ public final class BusClient implements AutoCloseable {
     private String epoch; // bus thread only
     private String syncTopic; // bus thread only
     private int syncs; // bus thread only
+    private boolean syncAnswered; // bus thread only
     private boolean syncedOnce; // bus thread only
     private boolean upstream; // bus thread only: the broker currently subscribes to our output
     private boolean upstreamSeen; // bus thread only
-    private final AtomicLong reconnects = new AtomicLong();
 
     /**
      * @param publishEndpoint   broker XSUB (bus in)
@@ -120,11 +120,6 @@ public final class BusClient implements AutoCloseable {
             retained.put(key, new String[] {topic, body});
         }
         publish(topic, body);
-    }
-
-    /** How many times the broker (re)subscribed to our output after the first time. */
-    public long reconnects() {
-        return reconnects.get();
     }
 
     /** Waits until the broker has subscribed to our output. */
@@ -203,7 +198,6 @@ public final class BusClient implements AutoCloseable {
         upstream = true;
         ready.countDown();
         if (upstreamSeen) {
-            reconnects.incrementAndGet();
             reannounce();
         }
         upstreamSeen = true;
@@ -234,10 +228,11 @@ public final class BusClient implements AutoCloseable {
                 }
                 // subscribed now, on the live connection: handled after every earlier subscription
                 syncTopic = Topics.BROKER_SYNC_PREFIX + syncId + "." + (++syncs);
+                syncAnswered = false;
                 in.subscribe(syncTopic.getBytes(StandardCharsets.UTF_8));
             }
-        } else if (topic.equals(syncTopic) && epoch != null && epoch.equals(epochOf(body))) {
-            syncTopic = topic + ".done"; // answered once; a later copy must not report again
+        } else if (topic.equals(syncTopic) && !syncAnswered && epoch.equals(epochOf(body))) {
+            syncAnswered = true; // a reconnection re-sends our subscriptions: report once per epoch
             boolean first = !syncedOnce;
             syncedOnce = true;
             try {

@@ -7,6 +7,8 @@ import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.BusClient;
@@ -35,7 +37,7 @@ public final class Engine implements AutoCloseable {
     private volatile boolean running;
     private volatile long lastStatusNanos = System.nanoTime();
     private long seq;
-    private final java.util.concurrent.CountDownLatch replayed = new java.util.concurrent.CountDownLatch(1);
+    private final CountDownLatch replayed = new CountDownLatch(1); // counted down by the first broker sync
 
     public Engine(IoModel model, SolverBackend backend, EngineOptions options) {
         this.model = model;
@@ -114,7 +116,7 @@ public final class Engine implements AutoCloseable {
      * charging, until the replay of {@code power_autonomy} corrects it a moment later.
      */
     private void awaitReplay() throws InterruptedException {
-        if (replayed.await(options.settleMs, java.util.concurrent.TimeUnit.MILLISECONDS)) {
+        if (replayed.await(options.settleMs, TimeUnit.MILLISECONDS)) {
             LOG.info("engine: inputs replayed by the broker, first solve");
         } else {
             LOG.info("engine: no broker replay within " + options.settleMs + " ms, first solve from what arrived");

@@ -12,6 +12,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
 import org.miron.runtime.Json;
+import org.miron.runtime.LinkMonitor;
 import org.miron.runtime.executor.SkillClient;
 import org.miron.runtime.executor.SkillHandle;
 import org.miron.runtime.executor.SkillRequest;
@@ -127,29 +128,18 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     }
 
     private void readResults() {
-        String monitorAddress = "inproc://skill-results-monitor-" + Integer.toHexString(System.identityHashCode(this));
-        try (ZMQ.Socket sub = ctx.createSocket(SocketType.SUB); ZMQ.Socket monitor = ctx.createSocket(SocketType.PAIR)) {
+        try (ZMQ.Socket sub = ctx.createSocket(SocketType.SUB); LinkMonitor link = new LinkMonitor(ctx, sub)) {
             sub.setLinger(0);
             sub.subscribe(new byte[0]);
-            sub.monitor(monitorAddress, ZMQ.EVENT_HANDSHAKE_PROTOCOL | ZMQ.EVENT_DISCONNECTED);
-            monitor.connect(monitorAddress);
             Connect.connect(sub, resultsEndpoint);
             sub.setReceiveTimeOut(100);
-            boolean established = false;
             while (running) {
                 byte[] frame = sub.recv();
                 if (frame != null) {
                     onResult(frame);
                 }
-                ZMQ.Event event;
-                while ((event = ZMQ.Event.recv(monitor, ZMQ.DONTWAIT)) != null) {
-                    if (event.getEvent() == ZMQ.EVENT_HANDSHAKE_PROTOCOL) {
-                        established = true;
-                    } else if (event.getEvent() == ZMQ.EVENT_DISCONNECTED && established) {
-                        // a stalled handshake also disconnects; only a link that was up loses results
-                        established = false;
-                        failAcknowledged("the skill interface went away (results connection lost); its result is lost");
-                    }
+                if (link.dropped()) {
+                    failAcknowledged("the skill interface went away (results connection lost); its result is lost");
                 }
                 expireDeadlines();
             }

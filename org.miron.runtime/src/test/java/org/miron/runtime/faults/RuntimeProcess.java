@@ -1,6 +1,5 @@
 package org.miron.runtime.faults;
 
-import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -73,10 +72,6 @@ final class RuntimeProcess implements AutoCloseable {
 
     boolean isAlive() {
         return process.isAlive();
-    }
-
-    static String pathSeparator() {
-        return File.pathSeparator;
     }
 
     @Override
