@@ -22,6 +22,7 @@ import org.miron.runtime.Json;
 public final class LastValueCache {
     private final int maxTopics;
     private final LinkedHashMap<String, List<byte[]>> last;
+    private long version; // bumped by every cached message: tells a snapshot writer something changed
 
     public LastValueCache(int maxTopics) {
         this.maxTopics = maxTopics;
@@ -41,6 +42,7 @@ public final class LastValueCache {
         String key = new String(frames.get(0), StandardCharsets.ISO_8859_1) + subject(frames);
         last.remove(key); // re-insert so eviction and replay order follow updates
         last.put(key, List.copyOf(frames));
+        version++;
         return true;
     }
 
@@ -71,6 +73,10 @@ public final class LastValueCache {
             }
         }
         return out;
+    }
+
+    public synchronized long version() {
+        return version;
     }
 
     public synchronized int size() {

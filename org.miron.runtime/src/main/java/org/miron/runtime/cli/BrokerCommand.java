@@ -1,5 +1,6 @@
 package org.miron.runtime.cli;
 
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.broker.Broker;
@@ -24,11 +25,15 @@ public final class BrokerCommand implements Callable<Integer> {
     @Option(names = "--bus-out", description = "XPUB endpoint subscribers connect to (default: ${DEFAULT-VALUE})")
     String busOut = Endpoints.DEFAULT_BUS_OUT;
 
+    @Option(names = "--cache-file", paramLabel = "FILE",
+            description = "snapshot of the last-value cache, written every 0.5 s when it changed and reloaded on start")
+    Path cacheFile;
+
     @Override
     public Integer call() {
         Broker broker;
         try {
-            broker = new Broker(new Endpoints(request, skill, Endpoints.DEFAULT_SKILL_EVENTS, busIn, busOut)).start();
+            broker = new Broker(new Endpoints(request, skill, Endpoints.DEFAULT_SKILL_EVENTS, busIn, busOut), cacheFile).start();
         } catch (IllegalStateException e) {
             System.err.println("miron broker: error: " + e.getMessage());
             return 2;

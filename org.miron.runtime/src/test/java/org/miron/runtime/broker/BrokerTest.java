@@ -117,6 +117,22 @@ public class BrokerTest {
         }
     }
 
+    @Test
+    public void brokenCacheFileIsAClearError() throws Exception {
+        java.nio.file.Path file = java.nio.file.Files.createTempFile("miron-cache", ".json");
+        try {
+            java.nio.file.Files.writeString(file, "[[\"cm9xbWUuZXN0aW1hdGU=\"]] trailing");
+            try (Broker other = new Broker(Ports.endpoints(), file)) {
+                other.start();
+                throw new AssertionError("broker started on a broken cache file");
+            } catch (IllegalStateException e) {
+                assertTrue(e.getMessage(), e.getMessage().contains("cannot load its cache file"));
+            }
+        } finally {
+            java.nio.file.Files.deleteIfExists(file);
+        }
+    }
+
     private void awaitCached(int topics) throws InterruptedException {
         long end = System.currentTimeMillis() + TIMEOUT;
         while (broker.cachedTopics() < topics && System.currentTimeMillis() < end) {
