@@ -42,6 +42,12 @@ public final class LinkMonitor implements AutoCloseable {
         return up;
     }
 
+    /** Whether the link is up now (never blocks). */
+    public boolean isUp() {
+        drain(ZMQ.DONTWAIT);
+        return up;
+    }
+
     /** Whether an established link was lost since the last call (never blocks). */
     public boolean dropped() {
         drain(ZMQ.DONTWAIT);

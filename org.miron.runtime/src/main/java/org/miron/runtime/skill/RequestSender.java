@@ -75,6 +75,11 @@ public final class RequestSender implements AutoCloseable {
         notifyAll();
     }
 
+    /** Forgets the request for {@code key} unless it is acknowledged already (then there is nothing to forget). */
+    public synchronized void cancel(String key) {
+        pending.remove(key);
+    }
+
     private synchronized Map.Entry<String, ObjectNode> next() throws InterruptedException {
         while (running && pending.isEmpty()) {
             wait(200);

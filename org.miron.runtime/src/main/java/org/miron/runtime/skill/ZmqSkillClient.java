@@ -6,8 +6,10 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Queue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
@@ -33,13 +35,15 @@ import org.zeromq.ZMQ;
  * <ul>
  * <li>its {@link SkillDeadlines deadline} passes (an abort-current-skill is sent too, so the robot
  *     does not keep doing what the tree gave up), or</li>
- * <li>the results connection drops after the interface acknowledged the push: a socket monitor on
- *     the results SUB reports the disconnection of an established (handshaken) link, and a PUB
- *     does not keep results for a subscriber that is away. Pushes not yet acknowledged keep
- *     waiting: the request is retried and reaches the restarted interface.</li>
+ * <li>the results connection drops (the interface died or restarted): a socket monitor on the
+ *     results SUB reports the disconnection of an established (handshaken) link, and a PUB keeps
+ *     no results for a subscriber that is away, so no pending result can come any more. Every
+ *     pending skill fails and its request, if not yet acknowledged, is withdrawn.</li>
  * </ul>
  * The skill is not pushed again automatically: it may have half run (a GoTo), so whether to
- * repeat a physical action is the tree's decision.
+ * repeat a physical action is the tree's decision. For the same reason a push is sent only while
+ * the results link is up (held back until then): otherwise a restarted interface, reached first
+ * through the broker, could publish a short skill's result before our SUB has reconnected.
  */
 public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     private static final Logger LOG = Logger.getLogger(ZmqSkillClient.class.getName());
@@ -52,6 +56,8 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
         final CompletableFuture<SkillResult> result = new CompletableFuture<>();
         final long deadlineNanos;
         volatile boolean acked;
+        volatile boolean sent;
+        ObjectNode message;
 
         Pending(String skill, long deadlineMs) {
             this.skill = skill;
@@ -60,6 +66,7 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
     }
 
     private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+    private final Queue<Long> held = new ConcurrentLinkedQueue<>(); // pushes not sent yet
     private final SkillDeadlines deadlines;
     // Ids start from the clock so that two executor runs never reuse an id the interface may still know.
     private final AtomicLong nextId = new AtomicLong(System.currentTimeMillis() * 1000);
@@ -99,9 +106,15 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
         CompletableFuture<SkillResult> result = p.result;
         pending.put(id, p);
         result.whenComplete((r, e) -> pending.remove(id));
-        requests.submit("push-skill " + id, pushSkillMessage(id, request));
+        p.message = pushSkillMessage(id, request);
+        held.add(id); // sent by the results thread once the results link is up
         return SkillHandle.of(result, () -> {
-            if (!result.isDone()) {
+            if (result.isDone()) {
+                return;
+            }
+            if (!p.sent) {
+                result.complete(SkillResult.of(SkillResult.Outcome.ABORT)); // never sent: drops it from the held ones
+            } else {
                 requests.submit("abort-current-skill", abortMessage(nextId.getAndIncrement()));
             }
         });
@@ -139,7 +152,10 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
                     onResult(frame);
                 }
                 if (link.dropped()) {
-                    failAcknowledged("the skill interface went away (results connection lost); its result is lost");
+                    failPending("the skill interface went away (results connection lost); its result is lost");
+                }
+                if (link.isUp()) {
+                    sendHeld();
                 }
                 expireDeadlines();
             }
@@ -150,8 +166,26 @@ public final class ZmqSkillClient implements SkillClient, AutoCloseable {
         }
     }
 
-    private void failAcknowledged(String why) {
-        pending.values().stream().filter(p -> p.acked).forEach(p -> fail(p, why));
+    private void failPending(String why) {
+        pending.forEach((id, p) -> {
+            fail(p, why);
+            requests.cancel(pushKey(id));
+        });
+    }
+
+    private void sendHeld() {
+        Long id;
+        while ((id = held.poll()) != null) {
+            Pending p = pending.get(id);
+            if (p != null) { // not failed or aborted meanwhile
+                p.sent = true;
+                requests.submit(pushKey(id), p.message);
+            }
+        }
+    }
+
+    private static String pushKey(long id) {
+        return "push-skill " + id;
     }
 
     private void expireDeadlines() {
