@@ -1,0 +1,110 @@
+package org.miron.eclipse.probe;
+
+import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+import org.eclipse.core.runtime.IConfigurationElement;
+import org.eclipse.core.runtime.Platform;
+import org.eclipse.core.runtime.RegistryFactory;
+import org.eclipse.core.runtime.content.IContentType;
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.EPackage;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.resource.impl.ResourceSetImpl;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.miron.generator.WeightPolicy;
+import org.miron.generator.standalone.BatchGeneration;
+import org.miron.generator.standalone.ModelLoader;
+import org.osgi.framework.Bundle;
+import org.osgi.framework.FrameworkUtil;
+
+/**
+ * Test helper bundle of the Equinox test: runs inside the framework, against the MIRoN bundles and
+ * Eclipse's registries, and answers in java.* types only (the test, outside the framework, calls
+ * these static methods by reflection and cannot share any other class with the bundles).
+ */
+public final class Probe {
+    private Probe() {
+    }
+
+    /** Entries of EMF's generated_package extension point: "contributor uri class". */
+    public static List<String> generatedPackages() {
+        List<String> entries = new ArrayList<>();
+        for (IConfigurationElement e : RegistryFactory.getRegistry()
+                .getConfigurationElementsFor("org.eclipse.emf.ecore", "generated_package")) {
+            entries.add(e.getContributor().getName() + " " + e.getAttribute("uri") + " " + e.getAttribute("class"));
+        }
+        return entries;
+    }
+
+    /** nsURI -> "bundle class" of the EPackage that EPackage.Registry.INSTANCE resolves it to. */
+    public static Map<String, String> ePackages(List<String> nsUris) {
+        Map<String, String> found = new TreeMap<>();
+        for (String nsUri : nsUris) {
+            EPackage p = EPackage.Registry.INSTANCE.getEPackage(nsUri);
+            if (p != null) {
+                Bundle bundle = FrameworkUtil.getBundle(p.getClass());
+                found.put(nsUri, (bundle == null ? "?" : bundle.getSymbolicName()) + " " + p.getClass().getName());
+            }
+        }
+        return found;
+    }
+
+    /**
+     * nsURI -> how EPackage.Registry.INSTANCE holds it before anything resolved it: "descriptor"
+     * (registered from plugin.xml, resolved on first use), "package" or "absent".
+     */
+    public static Map<String, String> ePackageEntries(List<String> nsUris) {
+        Map<String, String> found = new TreeMap<>();
+        for (String nsUri : nsUris) {
+            Object entry = EPackage.Registry.INSTANCE.get(nsUri);
+            found.put(nsUri, entry == null ? "absent" : entry instanceof EPackage ? "package" : "descriptor");
+        }
+        return found;
+    }
+
+    /** The id of the content type Eclipse gives a file name, or null. */
+    public static String contentType(String fileName) {
+        IContentType type = Platform.getContentTypeManager().findContentTypeFor(fileName);
+        return type == null ? null : type.getId();
+    }
+
+    /**
+     * Loads a file through EMF's global registry only (a plain ResourceSetImpl: the factory comes
+     * from the extension_parser registration) and answers "resourceClass rootClass errors".
+     */
+    public static String loadWithEmf(String file) {
+        Resource r = new ResourceSetImpl().getResource(URI.createFileURI(new File(file).getAbsolutePath()), true);
+        EcoreUtil.resolveAll(r);
+        return r.getClass().getName() + " " + (r.getContents().isEmpty() ? "-" : r.getContents().get(0).eClass().getName())
+                + " " + r.getErrors().size();
+    }
+
+    /** Loads and validates the files with the MIRoN languages: the diagnostics, one string each. */
+    public static List<String> check(List<String> files) {
+        ModelLoader loader = new ModelLoader();
+        files.forEach(f -> loader.load(new File(f)));
+        List<String> out = new ArrayList<>();
+        loader.validateAll().forEach(d -> out.add(d.toString()));
+        return out;
+    }
+
+    /** Generates the .miron files into dir: the stage, then the names written. */
+    public static List<String> generate(List<String> files, String dir) {
+        ModelLoader loader = new ModelLoader();
+        List<Resource> resources = new ArrayList<>();
+        files.forEach(f -> resources.add(loader.load(new File(f))));
+        BatchGeneration.Outcome outcome = new BatchGeneration(loader, WeightPolicy.NEED)
+                .run(resources, BatchGeneration.folder(Path.of(dir)));
+        List<String> out = new ArrayList<>();
+        out.add(outcome.stage().name());
+        out.addAll(outcome.written());
+        outcome.validation().forEach(d -> out.add(d.toString()));
+        outcome.generationErrors().forEach(d -> out.add(d.toString()));
+        return out;
+    }
+}
