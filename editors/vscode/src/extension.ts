@@ -4,7 +4,6 @@ import * as fs from 'fs';
 import * as path from 'path';
 import * as vscode from 'vscode';
 import {
-    ExecuteCommandRequest,
     Executable,
     LanguageClient,
     LanguageClientOptions,
@@ -19,15 +18,23 @@ export const LANGUAGES = ['bt', 'roqme', 'miron'] as const;
 /** Files whose changes the server must hear about (imports across files, `.xml` trees). */
 const WATCHED_FILES = '**/*.{bt,roqme,miron,xml}';
 
+/** The workspace/executeCommand of `miron lsp` behind "MIRoN: Generate". */
+const GENERATE = 'miron.generate';
+
 let client: LanguageClient | undefined;
 let output: vscode.OutputChannel | undefined;
+/**
+ * Our own `miron.generate` while no running server offers it. When the server offers the command,
+ * vscode-languageclient registers the VS Code command of that name itself (and the middleware below
+ * adapts its arguments and shows the answer), so the two registrations must never overlap.
+ */
+let fallbackGenerate: vscode.Disposable | undefined;
 
 export async function activate(context: vscode.ExtensionContext): Promise<void> {
     output = vscode.window.createOutputChannel('MIRoN Language Server');
     context.subscriptions.push(output);
 
     context.subscriptions.push(
-        vscode.commands.registerCommand('miron.generate', (uri?: vscode.Uri) => generate(uri)),
         vscode.commands.registerCommand('miron.restartServer', () => restart(context)),
         vscode.commands.registerCommand('miron.showOutput', () => output?.show(true)),
         vscode.workspace.onDidChangeConfiguration(async (e) => {
@@ -39,6 +46,7 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
                 }
             }
         }),
+        { dispose: () => setFallbackGenerate(false) },
     );
 
     await start(context);
@@ -58,6 +66,7 @@ function currentLaunch(): ServerLaunch & { env: NodeJS.ProcessEnv } {
 }
 
 async function start(context: vscode.ExtensionContext): Promise<void> {
+    setFallbackGenerate(false);
     const launch = currentLaunch();
     const executable: Executable = {
         command: launch.command,
@@ -79,6 +88,10 @@ async function start(context: vscode.ExtensionContext): Promise<void> {
         synchronize: { fileEvents: watcher },
         outputChannel: output,
         traceOutputChannel: output,
+        middleware: {
+            executeCommand: (command, args, next) =>
+                command === GENERATE ? generate(args[0], (uri) => next(command, [uri])) : next(command, args),
+        },
     };
 
     client = new LanguageClient('miron', 'MIRoN Language Server', serverOptions, clientOptions);
@@ -86,7 +99,13 @@ async function start(context: vscode.ExtensionContext): Promise<void> {
         (launch.cwd ? ` in ${launch.cwd}` : ''));
     try {
         await client.start();
+        const commands = client.initializeResult?.capabilities.executeCommandProvider?.commands ?? [];
+        if (!commands.includes(GENERATE)) {
+            output?.appendLine(`The server does not offer ${GENERATE}: "MIRoN: Generate" runs miron generate in a terminal.`);
+            setFallbackGenerate(true);
+        }
     } catch (err) {
+        setFallbackGenerate(true);
         const hint = missingCommandHint(launch.command);
         const message = `MIRoN: the language server did not start (${errorText(err)}).${hint}`;
         output?.appendLine(message);
@@ -96,6 +115,15 @@ async function start(context: vscode.ExtensionContext): Promise<void> {
         } else if (choice === 'Show Output') {
             output?.show(true);
         }
+    }
+}
+
+function setFallbackGenerate(on: boolean): void {
+    if (on && !fallbackGenerate) {
+        fallbackGenerate = vscode.commands.registerCommand(GENERATE, (uri?: unknown) => generateInTerminal(uri));
+    } else if (!on && fallbackGenerate) {
+        fallbackGenerate.dispose();
+        fallbackGenerate = undefined;
     }
 }
 
@@ -116,6 +144,7 @@ async function stop(): Promise<void> {
             output?.appendLine(`Stopping the language server: ${errorText(err)}`);
         }
     }
+    setFallbackGenerate(true);
 }
 
 async function restart(context: vscode.ExtensionContext): Promise<void> {
@@ -124,41 +153,76 @@ async function restart(context: vscode.ExtensionContext): Promise<void> {
 }
 
 /**
- * "MIRoN: Generate": asks the server to run `miron.generate` on a .miron file (the one given by
- * the explorer or editor menu, else the active editor's) and shows the message it answers.
+ * The .miron file "MIRoN: Generate" works on: the one given by the explorer or editor menu (a
+ * Uri, or a URI string when another extension or the server calls the command), else the
+ * active editor's. Saves it when it has unsaved changes: the generator reads the file.
  */
-async function generate(uri?: vscode.Uri): Promise<void> {
-    const target = uri instanceof vscode.Uri ? uri : vscode.window.activeTextEditor?.document.uri;
+async function generateTarget(arg: unknown): Promise<vscode.Uri | undefined> {
+    let target: vscode.Uri | undefined;
+    if (arg instanceof vscode.Uri) {
+        target = arg;
+    } else if (typeof arg === 'string' && arg.length > 0) {
+        target = /^[a-z][a-z0-9+.-]*:/i.test(arg) && !/^[a-z]:[\\/]/i.test(arg) ? vscode.Uri.parse(arg) : vscode.Uri.file(arg);
+    } else {
+        target = vscode.window.activeTextEditor?.document.uri;
+    }
     if (!target || !target.path.endsWith('.miron')) {
         void vscode.window.showWarningMessage('MIRoN: Generate works on a .miron file: open one first.');
-        return;
+        return undefined;
     }
-    if (!client || !client.isRunning()) {
-        void vscode.window.showErrorMessage('MIRoN: the language server is not running (see "MIRoN: Show Language Server Output").');
-        return;
-    }
-    // Unsaved changes would not be what the generator reads from disk.
-    const open = vscode.workspace.textDocuments.find((d) => d.uri.toString() === target.toString());
+    const open = vscode.workspace.textDocuments.find((d) => d.uri.toString() === target!.toString());
     if (open?.isDirty) {
         await open.save();
+    }
+    return target;
+}
+
+/**
+ * "MIRoN: Generate" through the server: sends workspace/executeCommand miron.generate with the
+ * file's URI (as a string) and shows the message it answers.
+ */
+async function generate(arg: unknown, execute: (uri: string) => Promise<unknown>): Promise<unknown> {
+    const target = await generateTarget(arg);
+    if (!target) {
+        return undefined;
     }
     try {
         const result = await vscode.window.withProgress(
             { location: vscode.ProgressLocation.Notification, title: `MIRoN: generating ${path.basename(target.path)}` },
-            () => client!.sendRequest(ExecuteCommandRequest.type, {
-                command: 'miron.generate',
-                arguments: [target.toString()],
-            }));
+            () => execute(target.toString()));
         const { message, ok } = describeResult(result);
+        output?.appendLine(message);
         if (ok) {
             void vscode.window.showInformationMessage(message);
         } else {
             void vscode.window.showErrorMessage(message);
         }
-        output?.appendLine(message);
+        return result;
     } catch (err) {
         void vscode.window.showErrorMessage(`MIRoN: Generate failed: ${errorText(err)}`);
+        return undefined;
     }
+}
+
+/** "MIRoN: Generate" without a server offering it: `miron generate FILE` in a terminal. */
+async function generateInTerminal(arg: unknown): Promise<void> {
+    const target = await generateTarget(arg);
+    if (!target) {
+        return;
+    }
+    if (target.scheme !== 'file') {
+        void vscode.window.showErrorMessage('MIRoN: Generate needs the language server for files that are not on disk.');
+        return;
+    }
+    const launch = currentLaunch();
+    const args = [...launch.args.slice(0, -1), 'generate', target.fsPath];
+    const terminal = vscode.window.createTerminal({ name: 'MIRoN: Generate', cwd: launch.cwd, env: launch.env });
+    terminal.show();
+    terminal.sendText([launch.command, ...args].map(shellQuote).join(' '));
+}
+
+function shellQuote(s: string): string {
+    return /^[\w@%+=:,./-]+$/.test(s) ? s : `'${s.replace(/'/g, `'\\''`)}'`;
 }
 
 function errorText(err: unknown): string {

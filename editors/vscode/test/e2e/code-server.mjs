@@ -1,0 +1,228 @@
+#!/usr/bin/env node
+// End-to-end test in a real VS Code: starts code-server on loopback (no auth) with the packaged
+// extension installed, opens a copy of examples/intralogistics in headless Chromium and checks
+// that the languages are recognised (status bar language mode), the language server's diagnostics
+// reach the Problems view and "MIRoN: Generate" answers.
+//
+//   npm run test:e2e
+//
+// Environment:
+//   CODE_SERVER     the code-server executable (default: code-server on the PATH)
+//   CHROMIUM        the Chromium executable (default: /usr/bin/chromium)
+//   MIRON_VSIX      the extension (default: build/miron-vscode.vsix; build it with npm run package)
+//   MIRON_SERVER    JSON array or string for miron.server.command (default: test/fake-miron.mjs, a
+//                   stand-in server publishing one warning per file; "./miron" for the real one)
+//   MIRON_DIAGNOSTIC  text expected in the Problems view (default: the stand-in's message)
+// Writes screenshots and the code-server log to build/e2e/. Prints "N passed, N failed" and
+// JUnit XML (MIRON_JUNIT_XML, default ../build/test-results/test/TEST-vscode-e2e.xml).
+import { spawn, spawnSync } from 'node:child_process';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:net';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const here = dirname(fileURLToPath(import.meta.url));
+const extensionRoot = resolve(here, '..', '..');
+const repoRoot = resolve(extensionRoot, '..', '..');
+const out = join(extensionRoot, 'build', 'e2e');
+mkdirSync(out, { recursive: true });
+
+const codeServer = process.env.CODE_SERVER || 'code-server';
+const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
+const vsix = resolve(process.env.MIRON_VSIX || join(extensionRoot, 'build', 'miron-vscode.vsix'));
+const serverCommand = process.env.MIRON_SERVER
+    ? (process.env.MIRON_SERVER.trim().startsWith('[') ? JSON.parse(process.env.MIRON_SERVER) : process.env.MIRON_SERVER)
+    : [process.execPath, join(extensionRoot, 'test', 'fake-miron.mjs')];
+const expectedDiagnostic = process.env.MIRON_DIAGNOSTIC || 'fake-miron: intralogistics.miron checked';
+
+const results = [];
+async function check(name, fn) {
+    const started = Date.now();
+    try {
+        await fn();
+        results.push({ name, time: (Date.now() - started) / 1000 });
+        console.log(`✔ ${name}`);
+    } catch (err) {
+        results.push({ name, time: (Date.now() - started) / 1000, error: err });
+        console.log(`✖ ${name}\n  ${String(err?.stack ?? err).split('\n').join('\n  ')}`);
+    }
+}
+
+function freePort() {
+    return new Promise((res, rej) => {
+        const s = createServer();
+        s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => res(port)); });
+        s.on('error', rej);
+    });
+}
+
+async function waitForHttp(url, ms) {
+    const end = Date.now() + ms;
+    for (;;) {
+        try {
+            const r = await fetch(url);
+            if (r.ok) return;
+        } catch { /* not yet */ }
+        if (Date.now() > end) throw new Error(`${url} did not answer within ${ms} ms`);
+        await new Promise((r) => setTimeout(r, 250));
+    }
+}
+
+function writeJunit() {
+    const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
+    const failures = results.filter((r) => r.error).length;
+    const lines = ['<?xml version="1.0" encoding="UTF-8"?>',
+        `<testsuite name="vscode-e2e" tests="${results.length}" skipped="0" failures="${failures}" errors="0" ` +
+        `timestamp="${new Date().toISOString().replace(/\.\d+Z$/, '')}" hostname="localhost" time="0">`];
+    for (const r of results) {
+        const head = `  <testcase name="${esc(r.name)}" classname="vscode.e2e.code-server" time="${r.time.toFixed(3)}"`;
+        lines.push(r.error
+            ? `${head}>\n    <failure message="${esc(r.error.message ?? r.error)}">${esc(r.error.stack ?? r.error)}</failure>\n  </testcase>`
+            : `${head}/>`);
+    }
+    lines.push('</testsuite>', '');
+    const target = resolve(extensionRoot, process.env.MIRON_JUNIT_XML || '../build/test-results/test/TEST-vscode-e2e.xml');
+    mkdirSync(dirname(target), { recursive: true });
+    writeFileSync(target, lines.join('\n'));
+}
+
+// ---------------------------------------------------------------- set up
+
+if (!existsSync(vsix)) {
+    console.error(`no ${vsix}: run npm run package first`);
+    process.exit(2);
+}
+const scratch = mkdtempSync(join(tmpdir(), 'miron-e2e-'));
+const workspace = join(scratch, 'intralogistics');
+cpSync(join(repoRoot, 'examples', 'intralogistics'), workspace, { recursive: true });
+mkdirSync(join(workspace, '.vscode'));
+writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
+    'miron.server.command': serverCommand,
+    'miron.trace.server': 'messages',
+    'miron.server.env': { FAKE_MIRON_LOG: join(out, 'fake-miron.log') },
+}, null, 2));
+const userData = join(scratch, 'user');
+const extensions = join(scratch, 'extensions');
+mkdirSync(join(userData, 'User'), { recursive: true });
+mkdirSync(extensions, { recursive: true });
+writeFileSync(join(userData, 'User', 'settings.json'), JSON.stringify({
+    'workbench.startupEditor': 'none',
+    'workbench.tips.enabled': false,
+    'workbench.enableExperiments': false,
+    'security.workspace.trust.enabled': false,
+    'extensions.autoCheckUpdates': false,
+    'extensions.autoUpdate': false,
+    'extensions.ignoreRecommendations': true,
+    'update.mode': 'none',
+    'telemetry.telemetryLevel': 'off',
+    'chat.disableAIFeatures': true,
+    'window.commandCenter': false,
+}, null, 2));
+const config = join(scratch, 'config.yaml');
+writeFileSync(config, 'auth: none\ncert: false\n');
+const common = ['--config', config, '--user-data-dir', userData, '--extensions-dir', extensions];
+
+const install = spawnSync(codeServer, [...common, '--install-extension', vsix], { encoding: 'utf8' });
+if (install.error || install.status !== 0) {
+    console.error(`code-server --install-extension failed: ${install.error ?? install.stderr}`);
+    process.exit(2);
+}
+
+const port = await freePort();
+const log = [];
+const server = spawn(codeServer, [...common, '--bind-addr', `127.0.0.1:${port}`, '--auth', 'none',
+    '--disable-telemetry', '--disable-update-check', '--disable-workspace-trust', '--disable-getting-started-override',
+    workspace], { stdio: ['ignore', 'pipe', 'pipe'], detached: false });
+server.stdout.on('data', (d) => log.push(d.toString()));
+server.stderr.on('data', (d) => log.push(d.toString()));
+
+let browser;
+try {
+    await waitForHttp(`http://127.0.0.1:${port}/healthz`, 60000);
+    browser = await chromium.launch({
+        executablePath: chromiumPath,
+        headless: true,
+        args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+            '--disable-sync', '--no-first-run', '--disable-dev-shm-usage'],
+    });
+    const page = await browser.newPage({ viewport: { width: 1600, height: 1000 } });
+    await page.goto(`http://127.0.0.1:${port}/?folder=${encodeURIComponent(workspace)}`);
+    await page.locator('.monaco-workbench').waitFor({ timeout: 60000 });
+    // The explorer of the opened folder.
+    await page.getByRole('treeitem', { name: 'intralogistics.miron' }).waitFor({ timeout: 60000 });
+
+    const open = async (file) => {
+        await page.getByRole('treeitem', { name: file }).first().click();
+        await page.locator(`.tabs-container .tab[aria-label*="${file}"]`).first().waitFor({ timeout: 30000 });
+    };
+    const languageMode = () => page.locator('#status\\.editor\\.mode').innerText({ timeout: 30000 });
+    const expectLanguage = async (name) => {
+        const end = Date.now() + 30000;
+        let mode = '';
+        while (Date.now() < end) {
+            mode = (await languageMode()).trim();
+            if (mode === name) return;
+            await page.waitForTimeout(250);
+        }
+        throw new Error(`language mode: expected ${name}, got ${mode}`);
+    };
+
+    await check('a .miron file opens in the MIRoN language', async () => {
+        await open('intralogistics.miron');
+        await expectLanguage('MIRoN');
+        await page.screenshot({ path: join(out, 'miron.png') });
+    });
+    await check('the MIRoN grammar colours the editor', async () => {
+        // Tokens of different scopes get different mtkN classes: a highlighted line has several.
+        const line = page.locator('.monaco-editor .view-line', { hasText: '@varpoint task' }).first();
+        await line.waitFor({ timeout: 10000 });
+        const classes = await line.locator('span span').evaluateAll((spans) => [...new Set(spans.map((s) => s.className))]);
+        if (classes.length < 3) throw new Error(`only ${classes.join(', ')} on "@varpoint task"`);
+    });
+    await check('a .roqme file opens in the RoQME language', async () => {
+        await open('intralogistics.roqme');
+        await expectLanguage('RoQME');
+    });
+    await check('a .bt file opens in the BT language', async () => {
+        await open('intralogistics.bt');
+        await expectLanguage('Behavior Tree (BehaviorTree.CPP XML)');
+    });
+    await check('the diagnostics of the language server are in the Problems view', async () => {
+        await open('intralogistics.miron');
+        await page.keyboard.press('Control+Shift+M');
+        const problem = page.locator('.markers-panel .monaco-list-row', { hasText: expectedDiagnostic }).first();
+        await problem.waitFor({ timeout: 60000 });
+        await page.screenshot({ path: join(out, 'problems.png') });
+    });
+    await check('MIRoN: Generate asks the server and shows its answer', async () => {
+        await open('intralogistics.miron');
+        await page.keyboard.press('F1');
+        await page.keyboard.type('MIRoN: Generate');
+        await page.locator('.quick-input-list .monaco-list-row', { hasText: 'MIRoN: Generate' }).first().waitFor({ timeout: 10000 });
+        await page.keyboard.press('Enter');
+        const toast = page.locator('.notifications-toasts', { hasText: process.env.MIRON_GENERATED || 'generated' });
+        await toast.first().waitFor({ timeout: 60000 });
+        await page.screenshot({ path: join(out, 'generate.png') });
+    });
+} catch (err) {
+    results.push({ name: 'code-server and Chromium start', time: 0, error: err });
+    console.log(`✖ code-server and Chromium start\n  ${String(err?.stack ?? err)}`);
+} finally {
+    if (browser) {
+        try {
+            const [page] = browser.contexts()[0]?.pages() ?? [];
+            if (page) await page.screenshot({ path: join(out, 'last.png') });
+        } catch { /* best effort */ }
+        await browser.close();
+    }
+    server.kill('SIGTERM');
+    writeFileSync(join(out, 'code-server.log'), log.join(''));
+    rmSync(scratch, { recursive: true, force: true });
+}
+
+writeJunit();
+const failed = results.filter((r) => r.error).length;
+console.log(`${results.length - failed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
