@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // A stand-in for `miron lsp` for the end-to-end test (test/e2e): speaks LSP over stdio with no
 // dependencies, answers initialize, publishes one diagnostic per opened BT/RoQME/MIRoN document
-// ("fake-miron: <file name> checked", a warning on the first line) and implements the
+// ("fake-miron: <file name> checked", a warning on the first line), one per file changed on disk
+// (workspace/didChangeWatchedFiles: "fake-miron: <file name> changed on disk") and implements the
 // workspace/executeCommand miron.generate. Usage: fake-miron.mjs lsp
 import { appendFileSync } from 'node:fs';
 
@@ -46,6 +47,20 @@ function handle(msg) {
             });
             break;
         }
+        case 'workspace/didChangeWatchedFiles':
+            for (const change of msg.params.changes) {
+                const name = decodeURIComponent(change.uri.replace(/^.*\//, ''));
+                send({
+                    method: 'textDocument/publishDiagnostics', params: {
+                        uri: change.uri, diagnostics: [{
+                            range: { start: { line: 0, character: 0 }, end: { line: 0, character: 1 } },
+                            severity: 3, source: 'miron', code: 'fake',
+                            message: `fake-miron: ${name} changed on disk (${['', 'created', 'changed', 'deleted'][change.type]})`,
+                        }],
+                    },
+                });
+            }
+            break;
         case 'workspace/executeCommand':
             send({ id: msg.id, result: { message: `fake-miron: generated ${msg.params.arguments?.[0]}`, files: [] } });
             break;

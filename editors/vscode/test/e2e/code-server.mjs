@@ -13,6 +13,8 @@
 //   MIRON_SERVER    JSON array or string for miron.server.command (default: test/fake-miron.mjs, a
 //                   stand-in server publishing one warning per file; "./miron" for the real one)
 //   MIRON_DIAGNOSTIC  text expected in the Problems view (default: the stand-in's message)
+//   MIRON_GENERATED   text expected in the notification of MIRoN: Generate (default: generated)
+// The checks of the .roqme/.bt diagnostics and of the watched files need the stand-in server.
 // Writes screenshots and the code-server log to build/e2e/. Prints "N passed, N failed" and
 // JUnit XML (MIRON_JUNIT_XML, default ../build/test-results/test/TEST-vscode-e2e.xml).
 import { spawn, spawnSync } from 'node:child_process';
@@ -35,6 +37,7 @@ const vsix = resolve(process.env.MIRON_VSIX || join(extensionRoot, 'build', 'mir
 const serverCommand = process.env.MIRON_SERVER
     ? (process.env.MIRON_SERVER.trim().startsWith('[') ? JSON.parse(process.env.MIRON_SERVER) : process.env.MIRON_SERVER)
     : [process.execPath, join(extensionRoot, 'test', 'fake-miron.mjs')];
+const fake = !process.env.MIRON_SERVER;
 const expectedDiagnostic = process.env.MIRON_DIAGNOSTIC || 'fake-miron: intralogistics.miron checked';
 
 const results = [];
@@ -126,7 +129,8 @@ const common = ['--config', config, '--user-data-dir', userData, '--extensions-d
 
 const install = spawnSync(codeServer, [...common, '--install-extension', vsix], { encoding: 'utf8' });
 if (install.error || install.status !== 0) {
-    console.error(`code-server --install-extension failed: ${install.error ?? install.stderr}`);
+    console.error(`code-server --install-extension failed: ${install.error ?? install.stderr}\n` +
+        'Install code-server with test/e2e/install-code-server.sh and set CODE_SERVER.');
     process.exit(2);
 }
 
@@ -195,6 +199,18 @@ try {
         const problem = page.locator('.markers-panel .monaco-list-row', { hasText: expectedDiagnostic }).first();
         await problem.waitFor({ timeout: 60000 });
         await page.screenshot({ path: join(out, 'problems.png') });
+    });
+    if (fake) await check('the server checks .roqme and .bt files too', async () => {
+        for (const file of ['intralogistics.roqme', 'intralogistics.bt']) {
+            await open(file);
+            const problem = page.locator('.markers-panel .monaco-list-row', { hasText: `fake-miron: ${file} checked` }).first();
+            await problem.waitFor({ timeout: 30000 });
+        }
+    });
+    if (fake) await check('files changed on disk reach the server (workspace/didChangeWatchedFiles), .xml included', async () => {
+        writeFileSync(join(workspace, 'extra.xml'), '<root main_tree_to_execute="A"><BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>\n');
+        const problem = page.locator('.markers-panel .monaco-list-row', { hasText: 'fake-miron: extra.xml changed on disk' }).first();
+        await problem.waitFor({ timeout: 30000 });
     });
     await check('MIRoN: Generate asks the server and shows its answer', async () => {
         await open('intralogistics.miron');
