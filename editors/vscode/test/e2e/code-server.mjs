@@ -7,7 +7,8 @@
 //   npm run test:e2e
 //
 // Environment:
-//   CODE_SERVER     the code-server executable (default: code-server on the PATH)
+//   CODE_SERVER     the code-server executable (default: code-server on the PATH, else
+//                   /tmp/code-server/node_modules/.bin/code-server from install-code-server.sh)
 //   CHROMIUM        the Chromium executable (default: /usr/bin/chromium)
 //   MIRON_VSIX      the extension (default: build/miron-vscode.vsix; build it with npm run package)
 //   MIRON_SERVER    JSON array or string for miron.server.command (default: test/fake-miron.mjs, a
@@ -31,7 +32,9 @@ const repoRoot = resolve(extensionRoot, '..', '..');
 const out = join(extensionRoot, 'build', 'e2e');
 mkdirSync(out, { recursive: true });
 
-const codeServer = process.env.CODE_SERVER || 'code-server';
+const installed = '/tmp/code-server/node_modules/.bin/code-server'; // install-code-server.sh's default
+const onPath = spawnSync('sh', ['-c', 'command -v code-server'], { encoding: 'utf8' }).stdout?.trim();
+const codeServer = process.env.CODE_SERVER || onPath || (existsSync(installed) ? installed : 'code-server');
 const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
 const vsix = resolve(process.env.MIRON_VSIX || join(extensionRoot, 'build', 'miron-vscode.vsix'));
 const serverCommand = process.env.MIRON_SERVER

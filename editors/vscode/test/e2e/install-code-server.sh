@@ -45,5 +45,5 @@ vscode="$dir/node_modules/code-server/lib/vscode"
     (cd bin/helpers && ln -sf browser-linux.sh browser.sh)
     (cd extensions && npm install --no-audit --no-fund --omit=dev --ignore-scripts)
 )
-"$dir/node_modules/.bin/code-server" --version >&2
+XDG_CONFIG_HOME="$dir/.config" "$dir/node_modules/.bin/code-server" --version >&2
 echo "$dir/node_modules/.bin/code-server"
