@@ -13,13 +13,18 @@ const escape = (s) => String(s)
 
 export default async function* junitReporter(source) {
     const cases = [];
+    const fileFailures = [];
     const start = Date.now();
     for await (const event of source) {
         if (event.type !== 'test:pass' && event.type !== 'test:fail') continue;
         const data = event.data;
         // Suites (describe) and files report too: count only leaf tests.
         if (data.details?.type === 'suite') continue;
-        if (data.nesting === 0 && data.name === data.file) continue;
+        // A test file itself: counted only when it fails without a failing test (it did not load).
+        if (data.nesting === 0 && data.name === data.file) {
+            if (event.type === 'test:fail') fileFailures.push(event);
+            continue;
+        }
         const classname = (data.file ?? 'vscode').replace(/^.*[\\/]/, '').replace(/\.[cm]?js$/, '');
         cases.push({
             name: data.name,
@@ -28,6 +33,13 @@ export default async function* junitReporter(source) {
             skipped: Boolean(data.skip || data.todo),
             error: event.type === 'test:fail' ? data.details?.error : undefined,
         });
+    }
+    for (const event of fileFailures) {
+        const data = event.data;
+        const classname = `vscode.${data.file.replace(/^.*[\\/]/, '').replace(/\.[cm]?js$/, '')}`;
+        if (!cases.some((c) => c.error && c.classname === classname)) {
+            cases.push({ name: `${classname} (the file)`, classname, time: 0, skipped: false, error: data.details?.error ?? 'failed' });
+        }
     }
     const failures = cases.filter((c) => c.error).length;
     const skipped = cases.filter((c) => c.skipped && !c.error).length;
