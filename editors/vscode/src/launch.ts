@@ -1,4 +1,5 @@
 // Pure helpers of the extension (no `vscode` import), so the unit tests run them under plain Node.
+import * as fs from 'fs';
 import * as path from 'path';
 
 /** How `miron lsp` is started. */
@@ -9,29 +10,85 @@ export interface ServerLaunch {
 }
 
 /**
- * The launch of `miron lsp` from the settings: `command` is `miron.server.command` (a string, or
- * an array of the program and its first arguments), `args` is `miron.server.args`, `folder` the
+ * The launch of `miron lsp` from the settings: `command` is `miron.server.command` (a program, an
+ * array of the program and its first arguments, or a command line in one string: split at white
+ * space unless it names an existing file), `args` is `miron.server.args`, `folder` the
  * first workspace folder. A relative path such as `./miron` is resolved against the folder; a bare
  * name (`miron`) is left to the PATH; `~/` is the home directory.
  */
 export function serverLaunch(command: unknown, args: unknown, folder: string | undefined,
-    home: string | undefined = process.env.HOME || process.env.USERPROFILE): ServerLaunch {
-    const parts = (Array.isArray(command) ? command : [command])
+    home: string | undefined = process.env.HOME || process.env.USERPROFILE,
+    exists: (file: string) => boolean = fs.existsSync): ServerLaunch {
+    let list: unknown[];
+    if (Array.isArray(command)) {
+        list = command;
+    } else if (typeof command === 'string' && /\s/.test(command.trim()) && !exists(resolveProgram(command.trim(), folder, home))) {
+        // A command line in one string: "java -jar /opt/miron/miron.jar", quotes group words.
+        list = splitCommandLine(command);
+    } else {
+        list = [command];
+    }
+    const parts = list
         .filter((s) => s !== undefined && s !== null)
         .map((s) => String(s))
         .filter((s) => s.trim().length > 0);
     if (parts.length === 0) {
         parts.push('miron');
     }
-    let program = parts[0];
-    if (home && (program === '~' || program.startsWith('~/'))) {
-        program = path.join(home, program.slice(1));
-    }
-    if (folder && !path.isAbsolute(program) && /[\\/]/.test(program)) {
-        program = path.resolve(folder, program);
-    }
+    const program = resolveProgram(parts[0], folder, home);
     const extra = Array.isArray(args) ? args.map((a) => String(a)) : [];
     return { command: program, args: [...parts.slice(1), ...extra, 'lsp'], cwd: folder };
+}
+
+/** `~/x` in the home directory, `./x` or `dir/x` in the folder, a bare name left to the PATH. */
+function resolveProgram(program: string, folder: string | undefined, home: string | undefined): string {
+    let p = program;
+    if (home && (p === '~' || p.startsWith('~/'))) {
+        p = path.join(home, p.slice(1));
+    }
+    if (folder && !path.isAbsolute(p) && /[\\/]/.test(p)) {
+        p = path.resolve(folder, p);
+    }
+    return p;
+}
+
+/** Splits a command line at white space; double or single quotes group words, \\ escapes. */
+export function splitCommandLine(line: string): string[] {
+    const words: string[] = [];
+    let word = '';
+    let inWord = false;
+    let quote: string | undefined;
+    for (let i = 0; i < line.length; i++) {
+        const ch = line[i];
+        if (quote) {
+            if (ch === quote) {
+                quote = undefined;
+            } else if (ch === '\\' && quote === '"' && i + 1 < line.length) {
+                word += line[++i];
+            } else {
+                word += ch;
+            }
+        } else if (ch === '"' || ch === "'") {
+            quote = ch;
+            inWord = true;
+        } else if (ch === '\\' && i + 1 < line.length) {
+            word += line[++i];
+            inWord = true;
+        } else if (/\s/.test(ch)) {
+            if (inWord) {
+                words.push(word);
+            }
+            word = '';
+            inWord = false;
+        } else {
+            word += ch;
+            inWord = true;
+        }
+    }
+    if (inWord) {
+        words.push(word);
+    }
+    return words;
 }
 
 /**

@@ -64,7 +64,7 @@ describe('package.json', () => {
 });
 
 describe('launch helpers (out/launch.js)', () => {
-    const { serverLaunch, describeResult } = require('../out/launch.js');
+    const { serverLaunch, describeResult, splitCommandLine } = require('../out/launch.js');
 
     test('miron.server.command: default, ./miron, arrays, args, ~', () => {
         assert.deepEqual(serverLaunch('miron', [], '/ws'), { command: 'miron', args: ['lsp'], cwd: '/ws' });
@@ -75,6 +75,11 @@ describe('launch helpers (out/launch.js)', () => {
             { command: 'java', args: ['-jar', 'miron.jar', '--verbose', 'lsp'], cwd: '/ws' });
         assert.equal(serverLaunch('~/bin/miron', [], '/ws', '/home/u').command, '/home/u/bin/miron');
         assert.equal(serverLaunch(['', ' '], [], '/ws').command, 'miron');
+        assert.deepEqual(serverLaunch('java -jar "/opt/my miron/miron.jar"', ['-v'], '/ws', '/h', () => false),
+            { command: 'java', args: ['-jar', '/opt/my miron/miron.jar', '-v', 'lsp'], cwd: '/ws' });
+        assert.deepEqual(serverLaunch('./my tools/miron', [], '/ws', '/h', (f) => f === '/ws/my tools/miron'),
+            { command: '/ws/my tools/miron', args: ['lsp'], cwd: '/ws' });
+        assert.deepEqual(splitCommandLine(`a 'b c' "d \\"e\\"" f\\ g`), ['a', 'b c', 'd "e"', 'f g']);
     });
     test('the answer of miron.generate becomes a message', () => {
         assert.deepEqual(describeResult('Wrote out/a.ext.xml'), { message: 'Wrote out/a.ext.xml', ok: true });
