@@ -3,13 +3,21 @@
 // dependencies, answers initialize, publishes one diagnostic per opened BT/RoQME/MIRoN document
 // ("fake-miron: <file name> checked", a warning on the first line), one per file changed on disk
 // (workspace/didChangeWatchedFiles: "fake-miron: <file name> changed on disk") and implements the
-// workspace/executeCommand miron.generate. Usage: fake-miron.mjs lsp
+// workspace/executeCommand miron.generate (not with FAKE_MIRON_NO_GENERATE=1).
+// Usage: fake-miron.mjs lsp | generate FILE
 import { appendFileSync } from 'node:fs';
 
+if (process.argv[2] === 'generate') {
+    // What "MIRoN: Generate" runs in a terminal when the server does not offer miron.generate.
+    process.stdout.write(`fake-miron: generated ${process.argv.slice(3).join(' ')} (command line)\n`);
+    process.exit(0);
+}
 if (process.argv[2] !== 'lsp') {
-    process.stderr.write('usage: fake-miron.mjs lsp\n');
+    process.stderr.write('usage: fake-miron.mjs lsp | generate FILE\n');
     process.exit(2);
 }
+// FAKE_MIRON_NO_GENERATE=1: a server without the miron.generate command.
+const offerGenerate = !process.env.FAKE_MIRON_NO_GENERATE;
 const log = (m) => { if (process.env.FAKE_MIRON_LOG) appendFileSync(process.env.FAKE_MIRON_LOG, m + '\n'); };
 
 function send(message) {
@@ -26,7 +34,7 @@ function handle(msg) {
                 id: msg.id, result: {
                     capabilities: {
                         textDocumentSync: { openClose: true, change: 1 },
-                        executeCommandProvider: { commands: ['miron.generate'] },
+                        executeCommandProvider: { commands: offerGenerate ? ['miron.generate'] : [] },
                     },
                     serverInfo: { name: 'fake-miron', version: '0' },
                 },

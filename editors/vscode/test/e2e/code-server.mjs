@@ -176,6 +176,13 @@ try {
         throw new Error(`language mode: expected ${name}, got ${mode}`);
     };
 
+    const runCommand = async (title) => {
+        await page.keyboard.press('F1');
+        await page.keyboard.type(title);
+        await page.locator('.quick-input-list .monaco-list-row', { hasText: title }).first().waitFor({ timeout: 10000 });
+        await page.keyboard.press('Enter');
+    };
+
     await check('a .miron file opens in the MIRoN language', async () => {
         await open('intralogistics.miron');
         await expectLanguage('MIRoN');
@@ -217,13 +224,29 @@ try {
     });
     await check('MIRoN: Generate asks the server and shows its answer', async () => {
         await open('intralogistics.miron');
-        await page.keyboard.press('F1');
-        await page.keyboard.type('MIRoN: Generate');
-        await page.locator('.quick-input-list .monaco-list-row', { hasText: 'MIRoN: Generate' }).first().waitFor({ timeout: 10000 });
-        await page.keyboard.press('Enter');
+        await runCommand('MIRoN: Generate');
         const toast = page.locator('.notifications-toasts', { hasText: process.env.MIRON_GENERATED || 'generated' });
         await toast.first().waitFor({ timeout: 60000 });
         await page.screenshot({ path: join(out, 'generate.png') });
+    });
+    if (fake) await check('without miron.generate in the server, MIRoN: Generate runs miron generate in a terminal', async () => {
+        writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
+            'miron.server.command': serverCommand,
+            'miron.server.env': { FAKE_MIRON_LOG: join(out, 'fake-miron.log'), FAKE_MIRON_NO_GENERATE: '1' },
+        }, null, 2));
+        // The settings change offers a restart; take it.
+        const restart = page.locator('.notifications-toasts .monaco-button', { hasText: 'Restart server' }).first();
+        await restart.waitFor({ timeout: 30000 });
+        await restart.click();
+        await page.waitForTimeout(3000);
+        await open('intralogistics.miron');
+        await runCommand('MIRoN: Generate');
+        await page.locator('.terminal-tabs-entry, .single-terminal-tab, .terminal-tab, [aria-label*="MIRoN: Generate"]',
+            { hasText: 'MIRoN: Generate' }).first().waitFor({ timeout: 30000 }).catch(async () => {
+            // The tab list is hidden with one terminal: the panel title names it.
+            await page.locator('.part.panel', { hasText: 'MIRoN: Generate' }).first().waitFor({ timeout: 5000 });
+        });
+        await page.screenshot({ path: join(out, 'generate-terminal.png') });
     });
 } catch (err) {
     results.push({ name: 'code-server and Chromium start', time: 0, error: err });
