@@ -29,27 +29,30 @@ let output: vscode.OutputChannel | undefined;
  * adapts its arguments and shows the answer), so the two registrations must never overlap.
  */
 let fallbackGenerate: vscode.Disposable | undefined;
+/** One watcher for the lifetime of the extension, shared by every (re)started client. */
+let watcher: vscode.FileSystemWatcher | undefined;
 
 export async function activate(context: vscode.ExtensionContext): Promise<void> {
     output = vscode.window.createOutputChannel('MIRoN Language Server');
-    context.subscriptions.push(output);
+    watcher = vscode.workspace.createFileSystemWatcher(WATCHED_FILES);
+    context.subscriptions.push(output, watcher);
 
     context.subscriptions.push(
-        vscode.commands.registerCommand('miron.restartServer', () => restart(context)),
+        vscode.commands.registerCommand('miron.restartServer', () => restart()),
         vscode.commands.registerCommand('miron.showOutput', () => output?.show(true)),
         vscode.workspace.onDidChangeConfiguration(async (e) => {
             if (e.affectsConfiguration('miron.server')) {
                 const choice = await vscode.window.showInformationMessage(
                     'The MIRoN language server settings changed.', 'Restart server');
                 if (choice) {
-                    await restart(context);
+                    await restart();
                 }
             }
         }),
         { dispose: () => setFallbackGenerate(false) },
     );
 
-    await start(context);
+    await start();
 }
 
 export async function deactivate(): Promise<void> {
@@ -65,7 +68,7 @@ function currentLaunch(): ServerLaunch & { env: NodeJS.ProcessEnv } {
     return { ...launch, env };
 }
 
-async function start(context: vscode.ExtensionContext): Promise<void> {
+async function start(): Promise<void> {
     setFallbackGenerate(false);
     const launch = currentLaunch();
     const executable: Executable = {
@@ -77,15 +80,12 @@ async function start(context: vscode.ExtensionContext): Promise<void> {
     };
     const serverOptions: ServerOptions = { run: executable, debug: executable };
 
-    const watcher = vscode.workspace.createFileSystemWatcher(WATCHED_FILES);
-    context.subscriptions.push(watcher);
-
     const clientOptions: LanguageClientOptions = {
         documentSelector: LANGUAGES.flatMap((language) => [
             { scheme: 'file', language },
             { scheme: 'untitled', language },
         ]),
-        synchronize: { fileEvents: watcher },
+        synchronize: watcher ? { fileEvents: watcher } : undefined,
         outputChannel: output,
         traceOutputChannel: output,
         middleware: {
@@ -109,12 +109,14 @@ async function start(context: vscode.ExtensionContext): Promise<void> {
         const hint = missingCommandHint(launch.command);
         const message = `MIRoN: the language server did not start (${errorText(err)}).${hint}`;
         output?.appendLine(message);
-        const choice = await vscode.window.showErrorMessage(message, 'Open Settings', 'Show Output');
-        if (choice === 'Open Settings') {
-            await vscode.commands.executeCommand('workbench.action.openSettings', 'miron.server');
-        } else if (choice === 'Show Output') {
-            output?.show(true);
-        }
+        // Not awaited: activation must not wait for the user to close the message.
+        void vscode.window.showErrorMessage(message, 'Open Settings', 'Show Output').then((choice) => {
+            if (choice === 'Open Settings') {
+                void vscode.commands.executeCommand('workbench.action.openSettings', 'miron.server');
+            } else if (choice === 'Show Output') {
+                output?.show(true);
+            }
+        });
     }
 }
 
@@ -147,9 +149,9 @@ async function stop(): Promise<void> {
     setFallbackGenerate(true);
 }
 
-async function restart(context: vscode.ExtensionContext): Promise<void> {
+async function restart(): Promise<void> {
     await stop();
-    await start(context);
+    await start();
 }
 
 /**

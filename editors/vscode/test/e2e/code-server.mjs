@@ -248,6 +248,17 @@ try {
         });
         await page.screenshot({ path: join(out, 'generate-terminal.png') });
     });
+    await check('a missing server command is reported with a hint', async () => {
+        writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
+            'miron.server.command': '/nonexistent/bin/miron',
+        }, null, 2));
+        const restart = page.locator('.notifications-toasts .monaco-button', { hasText: 'Restart server' }).first();
+        await restart.waitFor({ timeout: 30000 });
+        await restart.click();
+        await page.locator('.notifications-toasts', { hasText: '/nonexistent/bin/miron does not exist' }).first()
+            .waitFor({ timeout: 30000 });
+        await page.screenshot({ path: join(out, 'missing-server.png') });
+    });
 } catch (err) {
     results.push({ name: 'code-server and Chromium start', time: 0, error: err });
     console.log(`✖ code-server and Chromium start\n  ${String(err?.stack ?? err)}`);
