@@ -157,9 +157,10 @@ async function restart(): Promise<void> {
 /**
  * The .miron file "MIRoN: Generate" works on: the one given by the explorer or editor menu (a
  * Uri, or a URI string when another extension or the server calls the command), else the
- * active editor's. Saves it when it has unsaved changes: the generator reads the file.
+ * active editor's. With `save`, saves unsaved changes first (for `miron generate` on the command
+ * line, which reads the file; the server generates the model as the editor has it).
  */
-async function generateTarget(arg: unknown): Promise<vscode.Uri | undefined> {
+async function generateTarget(arg: unknown, save: boolean): Promise<vscode.Uri | undefined> {
     let target: vscode.Uri | undefined;
     if (arg instanceof vscode.Uri) {
         target = arg;
@@ -173,7 +174,7 @@ async function generateTarget(arg: unknown): Promise<vscode.Uri | undefined> {
         return undefined;
     }
     const open = vscode.workspace.textDocuments.find((d) => d.uri.toString() === target!.toString());
-    if (open?.isDirty) {
+    if (save && open?.isDirty) {
         await open.save();
     }
     return target;
@@ -181,10 +182,11 @@ async function generateTarget(arg: unknown): Promise<vscode.Uri | undefined> {
 
 /**
  * "MIRoN: Generate" through the server: sends workspace/executeCommand miron.generate with the
- * file's URI (as a string) and shows the message it answers.
+ * file's URI (as a string); the answer goes to the status bar and the output, and to a
+ * notification unless the server showed it.
  */
 async function generate(arg: unknown, execute: (uri: string) => Promise<unknown>): Promise<unknown> {
-    const target = await generateTarget(arg);
+    const target = await generateTarget(arg, false);
     if (!target) {
         return undefined;
     }
@@ -192,12 +194,16 @@ async function generate(arg: unknown, execute: (uri: string) => Promise<unknown>
         const result = await vscode.window.withProgress(
             { location: vscode.ProgressLocation.Notification, title: `MIRoN: generating ${path.basename(target.path)}` },
             () => execute(target.toString()));
-        const { message, ok } = describeResult(result);
+        const { message, ok, shownByServer, errors } = describeResult(result);
         output?.appendLine(message);
-        if (ok) {
-            void vscode.window.showInformationMessage(message);
-        } else {
-            void vscode.window.showErrorMessage(message);
+        errors.forEach((e) => output?.appendLine(`  ${e}`));
+        vscode.window.setStatusBarMessage(`${ok ? '$(check)' : '$(error)'} ${message}`, 10000);
+        if (!shownByServer) {
+            if (ok) {
+                void vscode.window.showInformationMessage(message);
+            } else {
+                void vscode.window.showErrorMessage(message, 'Show Output').then((c) => c && output?.show(true));
+            }
         }
         return result;
     } catch (err) {
@@ -208,7 +214,7 @@ async function generate(arg: unknown, execute: (uri: string) => Promise<unknown>
 
 /** "MIRoN: Generate" without a server offering it: `miron generate FILE` in a terminal. */
 async function generateInTerminal(arg: unknown): Promise<void> {
-    const target = await generateTarget(arg);
+    const target = await generateTarget(arg, true);
     if (!target) {
         return;
     }

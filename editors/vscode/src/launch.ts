@@ -91,28 +91,44 @@ export function splitCommandLine(line: string): string[] {
     return words;
 }
 
+/** What "MIRoN: Generate" tells the user about the answer of `miron.generate`. */
+export interface GenerateOutcome {
+    message: string;
+    ok: boolean;
+    /** The server has shown the message itself (window/showMessage): no second notification. */
+    shownByServer: boolean;
+    /** Problems that kept the generator from writing (`file:line:col: message`). */
+    errors: string[];
+}
+
 /**
- * The message to show for the answer of `workspace/executeCommand` `miron.generate`: the server
- * answers a message string, or an object with a `message` (and maybe `files`, the written files,
- * and `success` or `ok` false when the models have errors).
+ * The outcome of workspace/executeCommand `miron.generate`. `miron lsp` answers
+ * `{ ok, message, written, errors }` and shows the message itself (docs/lsp.md); a plain string
+ * answer, or an object without a message, is shown by the extension.
  */
-export function describeResult(result: unknown): { message: string; ok: boolean } {
+export function describeResult(result: unknown): GenerateOutcome {
     if (result === null || result === undefined) {
-        return { message: 'MIRoN: Generate done.', ok: true };
+        return { message: 'MIRoN: Generate done.', ok: true, shownByServer: false, errors: [] };
     }
     if (typeof result === 'string') {
-        return { message: result, ok: !/^\s*(error|failed)\b/i.test(result) };
+        return { message: result, ok: !/^\s*(error|failed|not generated)\b/i.test(result), shownByServer: false, errors: [] };
     }
     if (typeof result === 'object') {
-        const r = result as { message?: unknown; files?: unknown; success?: unknown; ok?: unknown };
-        const ok = r.success !== false && r.ok !== false;
-        let message = typeof r.message === 'string'
-            ? r.message
-            : ok ? 'MIRoN: Generate done.' : 'MIRoN: Generate failed.';
-        if (Array.isArray(r.files) && r.files.length > 0 && typeof r.message !== 'string') {
-            message += ` Wrote ${r.files.map((f) => path.basename(String(f))).join(', ')}.`;
+        const r = result as { message?: unknown; written?: unknown; files?: unknown; errors?: unknown; success?: unknown; ok?: unknown };
+        const errors = Array.isArray(r.errors) ? r.errors.map(String) : [];
+        const ok = r.success !== false && r.ok !== false && (r.ok === true || errors.length === 0);
+        if (typeof r.message === 'string') {
+            return { message: r.message, ok, shownByServer: true, errors };
         }
-        return { message, ok };
+        let message = ok ? 'MIRoN: Generate done.' : 'MIRoN: Generate failed.';
+        const written = Array.isArray(r.written) ? r.written : Array.isArray(r.files) ? r.files : [];
+        if (written.length > 0) {
+            message += ` Wrote ${written.map((f) => path.basename(String(f))).join(', ')}.`;
+        }
+        if (errors.length > 0) {
+            message += ` ${errors[0]}${errors.length > 1 ? ` (and ${errors.length - 1} more)` : ''}`;
+        }
+        return { message, ok, shownByServer: false, errors };
     }
-    return { message: String(result), ok: true };
+    return { message: String(result), ok: true, shownByServer: false, errors: [] };
 }

@@ -70,7 +70,12 @@ function handle(msg) {
             }
             break;
         case 'workspace/executeCommand':
-            send({ id: msg.id, result: { message: `fake-miron: generated ${msg.params.arguments?.[0]}`, files: [] } });
+        {
+            // As miron lsp does (docs/lsp.md): shows the message and answers { ok, message, written, errors }.
+            const message = `fake-miron: generated ${msg.params.arguments?.[0]}`;
+            send({ method: 'window/showMessage', params: { type: 3, message } });
+            send({ id: msg.id, result: { ok: true, message, written: [], errors: [] } });
+        }
             break;
         case 'shutdown':
             send({ id: msg.id, result: null });

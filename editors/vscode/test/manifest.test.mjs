@@ -82,10 +82,16 @@ describe('launch helpers (out/launch.js)', () => {
         assert.deepEqual(splitCommandLine(`a 'b c' "d \\"e\\"" f\\ g`), ['a', 'b c', 'd "e"', 'f g']);
     });
     test('the answer of miron.generate becomes a message', () => {
-        assert.deepEqual(describeResult('Wrote out/a.ext.xml'), { message: 'Wrote out/a.ext.xml', ok: true });
-        assert.deepEqual(describeResult('error: 2 problems'), { message: 'error: 2 problems', ok: false });
-        assert.deepEqual(describeResult({ message: 'done', files: ['x'] }), { message: 'done', ok: true });
-        assert.equal(describeResult({ files: ['/a/b.mzn', '/a/b.dzn'] }).message, 'MIRoN: Generate done. Wrote b.mzn, b.dzn.');
+        // miron lsp's answer (docs/lsp.md): the server shows the message itself.
+        assert.deepEqual(describeResult({ ok: true, message: 'Generated 4 files into /w/generated: a.ext.xml', written: ['/w/generated/a.ext.xml'], errors: [] }),
+            { message: 'Generated 4 files into /w/generated: a.ext.xml', ok: true, shownByServer: true, errors: [] });
+        assert.deepEqual(describeResult({ ok: false, message: 'Not generated: a.miron has 1 error', written: [], errors: ['a.miron:1:2: x'] }),
+            { message: 'Not generated: a.miron has 1 error', ok: false, shownByServer: true, errors: ['a.miron:1:2: x'] });
+        // Other answers are shown by the extension.
+        assert.deepEqual(describeResult('Wrote out/a.ext.xml'), { message: 'Wrote out/a.ext.xml', ok: true, shownByServer: false, errors: [] });
+        assert.equal(describeResult('error: 2 problems').ok, false);
+        assert.equal(describeResult({ written: ['/a/b.mzn', '/a/b.dzn'] }).message, 'MIRoN: Generate done. Wrote b.mzn, b.dzn.');
+        assert.equal(describeResult({ errors: ['f:1:1: e'] }).message, 'MIRoN: Generate failed. f:1:1: e');
         assert.equal(describeResult({ success: false }).ok, false);
         assert.equal(describeResult(null).ok, true);
     });
