@@ -12,14 +12,17 @@
 //   CHROMIUM        the Chromium executable (default: /usr/bin/chromium)
 //   MIRON_VSIX      the extension (default: build/miron-vscode.vsix; build it with npm run package)
 //   MIRON_SERVER    JSON array or string for miron.server.command (default: test/fake-miron.mjs, a
-//                   stand-in server publishing one warning per file; "./miron" for the real one)
-//   MIRON_DIAGNOSTIC  text expected in the Problems view (default: the stand-in's message)
+//                   stand-in server publishing one warning per file; /path/to/repo/miron for the
+//                   real one: then a rule naming an unknown property is appended to the copy of
+//                   intralogistics.miron)
+//   MIRON_DIAGNOSTIC  text expected in the Problems view (default: the stand-in's message, or
+//                   "nonexistent" with the real server)
 //   MIRON_GENERATED   text expected in the notification of MIRoN: Generate (default: generated)
 // The checks of the .roqme/.bt diagnostics and of the watched files need the stand-in server.
 // Writes screenshots and the code-server log to build/e2e/. Prints "N passed, N failed" and
 // JUnit XML (MIRON_JUNIT_XML, default ../build/test-results/test/TEST-vscode-e2e.xml).
 import { spawn, spawnSync } from 'node:child_process';
-import { cpSync, existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { appendFileSync, cpSync, existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -41,7 +44,9 @@ const serverCommand = process.env.MIRON_SERVER
     ? (process.env.MIRON_SERVER.trim().startsWith('[') ? JSON.parse(process.env.MIRON_SERVER) : process.env.MIRON_SERVER)
     : [process.execPath, join(extensionRoot, 'test', 'fake-miron.mjs')];
 const fake = !process.env.MIRON_SERVER;
-const expectedDiagnostic = process.env.MIRON_DIAGNOSTIC || 'fake-miron: intralogistics.miron checked';
+// The real server finds nothing wrong in the example: the test appends a rule naming an unknown
+// property to the workspace's copy, and expects its name in the Problems view.
+const expectedDiagnostic = process.env.MIRON_DIAGNOSTIC || (fake ? 'fake-miron: intralogistics.miron checked' : 'nonexistent');
 
 const results = [];
 async function check(name, fn) {
@@ -104,6 +109,9 @@ const scratch = mkdtempSync(join(tmpdir(), 'miron-e2e-'));
 const workspace = join(scratch, 'intralogistics');
 cpSync(join(repoRoot, 'examples', 'intralogistics'), workspace, { recursive: true });
 mkdirSync(join(workspace, '.vscode'));
+if (!fake) {
+    appendFileSync(join(workspace, 'intralogistics.miron'), '\nrule broken : roqme.nonexistent < 0.5\n  implies task = task::dock\n');
+}
 writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
     'miron.server.command': serverCommand,
     'miron.trace.server': 'messages',
