@@ -237,6 +237,18 @@ try {
         await toast.first().waitFor({ timeout: 60000 });
         await page.screenshot({ path: join(out, 'generate.png') });
     });
+    if (!fake) await check('fixed on disk, the model generates: the files are written', async () => {
+        cpSync(join(repoRoot, 'examples', 'intralogistics', 'intralogistics.miron'), join(workspace, 'intralogistics.miron'));
+        await page.locator('.markers-panel', { hasText: 'No problems have been detected' }).first().waitFor({ timeout: 60000 });
+        await open('intralogistics.miron');
+        await runCommand('MIRoN: Generate');
+        await page.locator('.notifications-toasts', { hasText: 'Generated 4 files' }).first().waitFor({ timeout: 120000 });
+        for (const ext of ['ext.xml', 'mzn', 'dzn', 'io.json']) {
+            const file = join(workspace, 'generated', `intralogistics.${ext}`);
+            if (!existsSync(file)) throw new Error(`${file} was not written`);
+        }
+        await page.screenshot({ path: join(out, 'generated.png') });
+    });
     if (fake) await check('without miron.generate in the server, MIRoN: Generate runs miron generate in a terminal', async () => {
         writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
             'miron.server.command': serverCommand,
