@@ -109,6 +109,8 @@ const scratch = mkdtempSync(join(tmpdir(), 'miron-e2e-'));
 const workspace = join(scratch, 'intralogistics');
 cpSync(join(repoRoot, 'examples', 'intralogistics'), workspace, { recursive: true });
 mkdirSync(join(workspace, '.vscode'));
+// A woven tree: .ext.xml must open as a BT, not as plain XML.
+cpSync(join(workspace, 'intralogistics.bt'), join(workspace, 'woven.ext.xml'));
 if (!fake) {
     appendFileSync(join(workspace, 'intralogistics.miron'), '\nrule broken : roqme.nonexistent < 0.5\n  implies task = task::dock\n');
 }
@@ -209,6 +211,10 @@ try {
     });
     await check('a .bt file opens in the BT language', async () => {
         await open('intralogistics.bt');
+        await expectLanguage('Behavior Tree (BehaviorTree.CPP XML)');
+    });
+    await check('a woven .ext.xml file opens in the BT language, not as XML', async () => {
+        await open('woven.ext.xml');
         await expectLanguage('Behavior Tree (BehaviorTree.CPP XML)');
     });
     await check('the diagnostics of the language server are in the Problems view', async () => {
