@@ -158,6 +158,24 @@ public class EquinoxTest {
     }
 
     @Test
+    public void editorBundleResolvesWithoutTm4eAndHoldsWhatItsPluginXmlNames() throws Exception {
+        Bundle editor = bundle("org.miron.eclipse.editor");
+        assertEquals(Bundle.ACTIVE, editor.getState());
+        assertEquals(System.getProperty("miron.osgiVersion"), editor.getVersion().toString());
+        String pluginXml = new String(editor.getEntry("plugin.xml").openStream().readAllBytes(), StandardCharsets.UTF_8);
+        var paths = java.util.regex.Pattern.compile("path=\"([^\"]+)\"").matcher(pluginXml);
+        int count = 0;
+        while (paths.find()) {
+            assertNotNull(paths.group(1), editor.getEntry(paths.group(1)));
+            count++;
+        }
+        assertEquals("3 grammars and 3 language configurations", 6, count);
+        for (String type : List.of("org.miron.bt", "org.miron.roqme", "org.miron.miron")) {
+            assertTrue(type, pluginXml.contains("scopeNameContentTypeBinding scopeName=") && pluginXml.contains("contentTypeId=\"" + type + "\""));
+        }
+    }
+
+    @Test
     public void extensionRegistryHoldsOurGeneratedPackages() throws Exception {
         List<String> entries = call("generatedPackages");
         assertTrue(entries.toString(), entries.contains("org.miron.bt " + BT + " org.miron.bt.bt.BtPackage"));
