@@ -1,11 +1,14 @@
 package org.miron.eclipse.tests;
 
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import java.io.File;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.jar.JarFile;
@@ -19,8 +22,10 @@ import org.w3c.dom.Element;
 import org.w3c.dom.NodeList;
 
 /**
- * The update site built by `gradle updateSite` (build/updatesite): site.xml names the feature, the
- * feature lists every bundle under plugins/ with the version its manifest carries, and our bundles
+ * The p2 repository built by `gradle updateSite` (build/updatesite, by Eclipse's p2 publisher):
+ * its metadata (content.jar) has an installable unit for every bundle under plugins/ with the
+ * version in its manifest, the feature group requiring each of them at that version, and a
+ * category holding the feature; its artifact index (artifacts.jar) lists every jar; our bundles
  * carry the build's version.
  */
 public class UpdateSiteTest {
@@ -31,30 +36,23 @@ public class UpdateSiteTest {
         return DocumentBuilderFactory.newInstance().newDocumentBuilder().parse(in);
     }
 
-    @Test
-    public void siteFeatureAndPluginsAgree() throws Exception {
-        Document siteXml = parse(Files.newInputStream(site.resolve("site.xml")));
-        NodeList features = siteXml.getElementsByTagName("feature");
-        assertEquals(1, features.getLength());
-        Element feature = (Element) features.item(0);
-        assertEquals("org.miron.feature", feature.getAttribute("id"));
-        assertEquals(version, feature.getAttribute("version"));
-        Path featureJar = site.resolve(feature.getAttribute("url"));
-        assertTrue(featureJar + " exists", Files.isRegularFile(featureJar));
-
-        Document featureXml;
-        try (JarFile jar = new JarFile(featureJar.toFile())) {
-            featureXml = parse(jar.getInputStream(jar.getEntry("feature.xml")));
+    private static Document jarredXml(Path jar, String entry) throws Exception {
+        try (JarFile j = new JarFile(jar.toFile())) {
+            return parse(j.getInputStream(j.getEntry(entry)));
         }
-        assertEquals("org.miron.feature", featureXml.getDocumentElement().getAttribute("id"));
-        assertEquals(version, featureXml.getDocumentElement().getAttribute("version"));
-        Map<String, String> listed = new TreeMap<>();
-        NodeList plugins = featureXml.getElementsByTagName("plugin");
-        for (int i = 0; i < plugins.getLength(); i++) {
-            Element p = (Element) plugins.item(i);
-            listed.put(p.getAttribute("id"), p.getAttribute("version"));
-        }
+    }
 
+    private static List<Element> elements(Document doc, String tag) {
+        List<Element> out = new ArrayList<>();
+        NodeList list = doc.getElementsByTagName(tag);
+        for (int i = 0; i < list.getLength(); i++) {
+            out.add((Element) list.item(i));
+        }
+        return out;
+    }
+
+    /** Symbolic name -> Bundle-Version of every jar under plugins/ (named as p2 expects). */
+    private Map<String, String> shippedBundles() throws Exception {
         Map<String, String> shipped = new TreeMap<>();
         for (File f : site.resolve("plugins").toFile().listFiles()) {
             try (JarFile jar = new JarFile(f)) {
@@ -65,20 +63,85 @@ public class UpdateSiteTest {
                 shipped.put(bsn, v);
             }
         }
-        assertEquals(shipped, listed);
-        for (String ours : new String[] {"org.miron.bt", "org.miron.dsl", "org.miron.generator"}) {
-            assertEquals(ours, version, listed.get(ours));
-        }
-        assertTrue(listed.containsKey("com.fasterxml.jackson.core.jackson-databind"));
+        return shipped;
     }
 
     @Test
-    public void theZipHoldsTheSite() throws Exception {
+    public void metadataListsEveryBundleWithItsVersion() throws Exception {
+        Map<String, String> shipped = shippedBundles();
+        for (String ours : new String[] {"org.miron.bt", "org.miron.dsl", "org.miron.generator", "org.miron.eclipse.editor"}) {
+            assertEquals(ours, version, shipped.get(ours));
+        }
+        assertTrue(shipped.containsKey("com.fasterxml.jackson.core.jackson-databind"));
+
+        Document content = jarredXml(site.resolve("content.jar"), "content.xml");
+        Map<String, String> units = new TreeMap<>();
+        for (Element unit : elements(content, "unit")) {
+            units.put(unit.getAttribute("id"), unit.getAttribute("version"));
+        }
+        shipped.forEach((bsn, v) -> assertEquals(bsn, v, units.get(bsn)));
+        assertEquals(version, units.get("org.miron.feature.feature.group"));
+        assertEquals(version, units.get("org.miron.feature.feature.jar"));
+
+        // The feature group requires every bundle at exactly its version.
+        Element group = elements(content, "unit").stream()
+                .filter(u -> u.getAttribute("id").equals("org.miron.feature.feature.group")).findFirst().orElseThrow();
+        Map<String, String> required = new TreeMap<>();
+        NodeList reqs = group.getElementsByTagName("required");
+        for (int i = 0; i < reqs.getLength(); i++) {
+            Element r = (Element) reqs.item(i);
+            required.put(r.getAttribute("name"), r.getAttribute("range"));
+        }
+        shipped.forEach((bsn, v) -> assertEquals(bsn, "[" + v + "," + v + "]", required.get(bsn)));
+
+        // A category (Install New Software... lists categorised features) holding the feature.
+        Element category = elements(content, "unit").stream()
+                .filter(u -> u.getAttribute("id").equals("org.miron.toolchain")).findFirst().orElseThrow();
+        assertTrue(elements(content, "property").stream().anyMatch(p -> p.getParentNode().getParentNode() == category
+                && p.getAttribute("name").equals("org.eclipse.equinox.p2.type.category") && p.getAttribute("value").equals("true")));
+        NodeList categoryReqs = category.getElementsByTagName("required");
+        assertEquals(1, categoryReqs.getLength());
+        assertEquals("org.miron.feature.feature.group", ((Element) categoryReqs.item(0)).getAttribute("name"));
+    }
+
+    @Test
+    public void artifactsListEveryJar() throws Exception {
+        Map<String, String> shipped = shippedBundles();
+        Document artifacts = jarredXml(site.resolve("artifacts.jar"), "artifacts.xml");
+        Map<String, String> bundles = new TreeMap<>();
+        for (Element a : elements(artifacts, "artifact")) {
+            if (a.getAttribute("classifier").equals("osgi.bundle")) {
+                bundles.put(a.getAttribute("id"), a.getAttribute("version"));
+            } else {
+                assertEquals("org.eclipse.update.feature", a.getAttribute("classifier"));
+                assertEquals("org.miron.feature", a.getAttribute("id"));
+                assertEquals(version, a.getAttribute("version"));
+            }
+        }
+        assertEquals(shipped, bundles);
+        assertTrue(Files.isRegularFile(site.resolve("features/org.miron.feature_" + version + ".jar")));
+    }
+
+    @Test
+    public void theFeatureListsEveryBundle() throws Exception {
+        Document feature = jarredXml(site.resolve("features/org.miron.feature_" + version + ".jar"), "feature.xml");
+        assertEquals("org.miron.feature", feature.getDocumentElement().getAttribute("id"));
+        assertEquals(version, feature.getDocumentElement().getAttribute("version"));
+        Map<String, String> listed = new TreeMap<>();
+        for (Element p : elements(feature, "plugin")) {
+            listed.put(p.getAttribute("id"), p.getAttribute("version"));
+        }
+        assertEquals(shippedBundles(), listed);
+    }
+
+    @Test
+    public void theZipHoldsTheRepository() throws Exception {
         Path zip = site.getParent().resolve("distributions").resolve("org.miron.updatesite-" + version + ".zip");
         try (JarFile jar = new JarFile(zip.toFile())) {
-            assertTrue(jar.getEntry("site.xml") != null);
-            assertTrue(jar.getEntry("features/org.miron.feature_" + version + ".jar") != null);
-            assertTrue(jar.getEntry("plugins/org.miron.bt_" + version + ".jar") != null);
+            assertNotNull(jar.getEntry("content.jar"));
+            assertNotNull(jar.getEntry("artifacts.jar"));
+            assertNotNull(jar.getEntry("features/org.miron.feature_" + version + ".jar"));
+            assertNotNull(jar.getEntry("plugins/org.miron.bt_" + version + ".jar"));
         }
     }
 }
