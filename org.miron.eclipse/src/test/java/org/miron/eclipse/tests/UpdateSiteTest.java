@@ -135,6 +135,26 @@ public class UpdateSiteTest {
     }
 
     @Test
+    public void theP2DirectorInstallsTheFeatureWithWhatItRequires() throws Exception {
+        // gradle p2InstallCheck: Eclipse's installer installed org.miron.feature from the update
+        // site, with Xtext, EMF, Guice, ANTLR... from a second repository, into an empty folder.
+        Path installed = Path.of(System.getProperty("miron.p2install"));
+        Map<String, String> shipped = shippedBundles();
+        for (Map.Entry<String, String> bundle : shipped.entrySet()) {
+            Path jar = installed.resolve("plugins").resolve(bundle.getKey() + "_" + bundle.getValue() + ".jar");
+            assertTrue(jar + " installed", Files.isRegularFile(jar));
+        }
+        assertTrue(Files.isRegularFile(installed.resolve("features/org.miron.feature_" + version + "/feature.xml")));
+        try (var plugins = Files.list(installed.resolve("plugins"))) {
+            List<String> names = plugins.map(p -> p.getFileName().toString()).toList();
+            assertTrue(names.toString(), names.stream().anyMatch(n -> n.startsWith("org.eclipse.xtext_2.42.")));
+            assertTrue(names.toString(), names.contains("org.antlr.runtime_3.2.0.jar"));
+            assertTrue(names.toString(), names.stream().anyMatch(n -> n.startsWith("com.google.inject_7.")));
+            assertTrue(names.toString(), names.stream().anyMatch(n -> n.startsWith("org.eclipse.emf.ecore_2.")));
+        }
+    }
+
+    @Test
     public void theZipHoldsTheRepository() throws Exception {
         Path zip = site.getParent().resolve("distributions").resolve("org.miron.updatesite-" + version + ".zip");
         try (JarFile jar = new JarFile(zip.toFile())) {
