@@ -2,6 +2,7 @@ package org.miron.ide.server;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
+import org.eclipse.xtext.resource.XtextResourceFactory;
 import org.eclipse.xtext.resource.impl.ResourceServiceProviderRegistryImpl;
 import org.miron.bt.ide.BtIdeSetup;
 import org.miron.dsl.MironRuntimeModule;
@@ -41,7 +42,7 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
         IResourceServiceProvider btServices = bt.getInstance(IResourceServiceProvider.class);
         IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().put("xml", btServices);
         Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap()
-                .put("xml", bt.getInstance(Resource.Factory.class));
+                .put("xml", bt.getInstance(XtextResourceFactory.class));
 
         ResourceServiceProviderRegistryImpl result = new ResourceServiceProviderRegistryImpl();
         result.getExtensionToFactoryMap().put("bt", btServices);
