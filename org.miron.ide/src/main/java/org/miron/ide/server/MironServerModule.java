@@ -1,7 +1,9 @@
 package org.miron.ide.server;
 
 import org.eclipse.xtext.ide.server.ILanguageServerShutdownAndExitHandler;
+import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.ServerModule;
+import org.eclipse.lsp4j.services.LanguageServer;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 
 import com.google.inject.AbstractModule;
@@ -23,6 +25,8 @@ public final class MironServerModule {
             @Override
             protected void configure() {
                 bind(IResourceServiceProvider.Registry.class).toProvider(MironLanguages.class);
+                bind(LanguageServer.class).to(MironLanguageServerImpl.class);
+                bind(LanguageServerImpl.class).to(MironLanguageServerImpl.class);
                 if (!exitProcess) {
                     bind(ILanguageServerShutdownAndExitHandler.class).to(ILanguageServerShutdownAndExitHandler.NullImpl.class);
                 }

@@ -79,6 +79,12 @@ public final class LspClient implements LanguageClient, AutoCloseable {
         server.initialized(new InitializedParams());
     }
 
+    /** initialize + initialized as a client that opens single files, without any folder. */
+    public void initializeWithoutWorkspace() throws Exception {
+        server.initialize(new InitializeParams()).get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
+        server.initialized(new InitializedParams());
+    }
+
     public static String uri(Path path) {
         return path.toAbsolutePath().normalize().toUri().toString();
     }
