@@ -1,11 +1,15 @@
 package org.miron.bt.ide;
 
+import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.LexerIdeBindings;
+import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.eclipse.xtext.ide.editor.contentassist.CompletionPrefixProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.antlr.internal.Lexer;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
+import org.miron.bt.ide.hover.BtDocumentationProvider;
+import org.miron.bt.ide.hover.BtHoverService;
 
 import com.google.inject.Binder;
 import com.google.inject.name.Names;
@@ -24,6 +28,14 @@ public class BtIdeModule extends AbstractBtIdeModule {
     @Override
     public Class<? extends CompletionPrefixProvider> bindCompletionPrefixProvider() {
         return CompletionPrefixProvider.class;
+    }
+
+    public Class<? extends IEObjectDocumentationProvider> bindIEObjectDocumentationProvider() {
+        return BtDocumentationProvider.class;
+    }
+
+    public Class<? extends IHoverService> bindIHoverService() {
+        return BtHoverService.class;
     }
 
     public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
