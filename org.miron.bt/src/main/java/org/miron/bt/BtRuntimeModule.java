@@ -4,6 +4,7 @@ import org.eclipse.xtext.conversion.IValueConverterService;
 import org.eclipse.xtext.formatting2.IFormatter2;
 import org.eclipse.xtext.linking.ILinkingDiagnosticMessageProvider;
 import org.eclipse.xtext.naming.IQualifiedNameProvider;
+import org.eclipse.xtext.parser.antlr.ISyntaxErrorMessageProvider;
 import org.eclipse.xtext.parser.antlr.Lexer;
 import org.eclipse.xtext.parser.antlr.LexerBindings;
 import org.eclipse.xtext.parser.antlr.LexerProvider;
@@ -14,6 +15,7 @@ import org.miron.bt.formatting2.BtFormatter;
 import org.miron.bt.linking.BtLinkingDiagnosticMessageProvider;
 import org.miron.bt.naming.BtQualifiedNameProvider;
 import org.miron.bt.parser.BtLexer;
+import org.miron.bt.parser.BtSyntaxErrorMessageProvider;
 import org.miron.bt.parser.antlr.lexer.InternalBtLexer;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.serializer.BtCloseTagSequencer;
@@ -68,5 +70,10 @@ public class BtRuntimeModule extends AbstractBtRuntimeModule {
 
     public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {
         return BtLinkingDiagnosticMessageProvider.class;
+    }
+
+    // Syntax errors carry the BT language's issue code (BtIssueCodes.SYNTAX_ERROR).
+    public Class<? extends ISyntaxErrorMessageProvider> bindISyntaxErrorMessageProvider() {
+        return BtSyntaxErrorMessageProvider.class;
     }
 }

@@ -140,8 +140,8 @@ public class GenerateCommandTest {
         assertEquals(1, cli.run("generate", model.toString(), "-o", out.toString()));
         String[] lines = cli.out().split("\n");
         assertEquals(cli.out(), 2, lines.length);
-        assertTrue(lines[0], lines[0].matches(".*broken\\.miron:4:\\d+: error: .*NoSuchNode.*"));
-        assertTrue(lines[1], lines[1].matches(".*broken\\.miron:6:\\d+: error: .*no_such_property.*"));
+        assertTrue(lines[0], lines[0].matches(".*broken\\.miron:4:\\d+: error \\[roqme\\.unknown-reference\\]: .*NoSuchNode.*"));
+        assertTrue(lines[1], lines[1].matches(".*broken\\.miron:6:\\d+: error \\[roqme\\.unknown-reference\\]: .*no_such_property.*"));
         assertFalse("nothing may be written", Files.exists(out));
     }
 
@@ -176,6 +176,6 @@ public class GenerateCommandTest {
         Path model = write("bad.miron", "import \"intralogistics.bt\" as main\n\n@varpoint v : enum { a : main.Nope, b : preset } in main.Charge\n");
         Cli cli = new Cli();
         assertEquals(1, cli.run("check", model.toString()));
-        assertTrue(cli.out(), cli.out().matches("(?s).*bad\\.miron:3:\\d+: error: .*Nope.*"));
+        assertTrue(cli.out(), cli.out().matches("(?s).*bad\\.miron:3:\\d+: error \\[roqme\\.unknown-reference\\]: .*Nope.*"));
     }
 }

@@ -1,5 +1,7 @@
 package org.miron.bt.validation;
 
+import static org.miron.bt.validation.BtIssueCodes.*;
+
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -38,6 +40,7 @@ import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtCloseTags;
 import org.miron.bt.util.BtTrees;
+import org.miron.bt.util.Suggestions;
 
 /**
  * The rules BehaviorTree.CPP 3 applies when it loads or ticks a tree, checked up front so a user
@@ -56,11 +59,12 @@ public class BtValidator extends AbstractBtValidator {
             // Only the file BehaviorTree.CPP loads first needs it; included files are libraries.
             if (model.getTrees().size() > 1 && !BtTrees.isIncludedByAnother(model.eResource())) {
                 error("main_tree_to_execute is required when a file holds several trees ("
-                        + model.getTrees().size() + " here)", model, null);
+                        + model.getTrees().size() + " here)", model, null, MAIN_TREE_REQUIRED);
             }
         } else if (!visible.containsKey(main)) {
             error("main_tree_to_execute '" + main + "' names no BehaviorTree of this file or its includes",
-                    attribute(model.getAttributes(), "main_tree_to_execute"), BT.getAttribute_Value());
+                    attribute(model.getAttributes(), "main_tree_to_execute"), BT.getAttribute_Value(),
+                    UNKNOWN_MAIN_TREE, Suggestions.closest(main, visible.keySet()).toArray(new String[0]));
         }
     }
 
@@ -69,26 +73,27 @@ public class BtValidator extends AbstractBtValidator {
         URI uri = BtGlobalScopeProvider.resolve(include.eResource(), include.getImportURI());
         if (uri == null || !EcoreUtil2.isValidUri(include, uri)) {
             error("included file '" + include.getImportURI() + "' not found (paths are relative to this file)",
-                    include, BT.getImport_ImportURI());
+                    include, BT.getImport_ImportURI(), INCLUDE_NOT_FOUND);
         } else if (uri.equals(include.eResource().getURI())) {
-            error("a file cannot include itself", include, BT.getImport_ImportURI());
+            error("a file cannot include itself", include, BT.getImport_ImportURI(), SELF_INCLUDE);
         }
     }
 
     @Check
     public void checkTree(BehaviorTree tree) {
         if (tree.getName() == null || tree.getName().isEmpty()) {
-            error("BehaviorTree needs an ID attribute", tree, null);
+            error("BehaviorTree needs an ID attribute", tree, null, TREE_WITHOUT_ID);
         } else {
             checkDuplicateTree(tree);
         }
         if (tree.getNodes().isEmpty()) {
-            error("BehaviorTree '" + tree.getName() + "' must have exactly one root node, it has none", tree, null);
+            error("BehaviorTree '" + tree.getName() + "' must have exactly one root node, it has none", tree, null,
+                    TREE_WITHOUT_ROOT);
         }
         for (int i = 1; i < tree.getNodes().size(); i++) {
             error("BehaviorTree '" + tree.getName() + "' must have exactly one root node: wrap its "
                     + tree.getNodes().size() + " nodes in a Sequence or another control node",
-                    tree.getNodes().get(i), null);
+                    tree.getNodes().get(i), null, TREE_SEVERAL_ROOTS);
         }
     }
 
@@ -99,7 +104,8 @@ public class BtValidator extends AbstractBtValidator {
                 break;
             }
             if (tree.getName().equals(other.getName())) {
-                error("duplicate BehaviorTree ID '" + tree.getName() + "'", tree, BT.getBehaviorTree_Name());
+                error("duplicate BehaviorTree ID '" + tree.getName() + "'", tree, BT.getBehaviorTree_Name(),
+                        DUPLICATE_TREE_ID);
                 return;
             }
         }
@@ -107,7 +113,7 @@ public class BtValidator extends AbstractBtValidator {
             for (BehaviorTree other : BtTrees.treesOf(included)) {
                 if (tree.getName().equals(other.getName())) {
                     error("duplicate BehaviorTree ID '" + tree.getName() + "': also defined in "
-                            + included.getURI().lastSegment(), tree, BT.getBehaviorTree_Name());
+                            + included.getURI().lastSegment(), tree, BT.getBehaviorTree_Name(), DUPLICATE_TREE_ID);
                     return;
                 }
             }
@@ -117,7 +123,7 @@ public class BtValidator extends AbstractBtValidator {
     @Check
     public void checkControlChildren(ControlNode node) {
         if (node.getNodes().isEmpty() && !isConditional(node)) {
-            error(node.getTag() + " needs at least one child", node, BT.getTreeNode_Tag());
+            error(node.getTag() + " needs at least one child", node, BT.getTreeNode_Tag(), CONTROL_WITHOUT_CHILDREN);
         }
     }
 
@@ -134,20 +140,21 @@ public class BtValidator extends AbstractBtValidator {
         int children = node.getNodes().size();
         if (children < 2) {
             error(node.getTag() + " needs 2 or 3 children (condition, then, optional else), it has " + children,
-                    node, BT.getTreeNode_Tag());
+                    node, BT.getTreeNode_Tag(), CONDITIONAL_CHILD_COUNT);
         } else if (children > 3) {
             error(node.getTag() + " needs 2 or 3 children (condition, then, optional else), it has " + children,
-                    node.getNodes().get(3), null);
+                    node.getNodes().get(3), null, CONDITIONAL_CHILD_COUNT);
         }
     }
 
     @Check
     public void checkDecoratorChild(DecoratorNode node) {
         if (node.getNode() == null) {
-            error(node.getTag() + " needs exactly one child, it has none", node, BT.getTreeNode_Tag());
+            error(node.getTag() + " needs exactly one child, it has none", node, BT.getTreeNode_Tag(),
+                    DECORATOR_CHILD_COUNT);
         } else if (!node.getSurplus().isEmpty()) {
             error(node.getTag() + " needs exactly one child, it has " + (1 + node.getSurplus().size()),
-                    node.getSurplus().get(0), null);
+                    node.getSurplus().get(0), null, DECORATOR_CHILD_COUNT);
         }
     }
 
@@ -164,7 +171,7 @@ public class BtValidator extends AbstractBtValidator {
         // Negative thresholds count from the number of children (-1 = all), as in BehaviorTree.CPP.
         if (value != null && children > 0 && (value > children || value < -children || value == 0)) {
             error(port + " " + value + " does not fit a Parallel with " + children + " children",
-                    attribute(node.getAttributes(), port), BT.getAttribute_Value());
+                    attribute(node.getAttributes(), port), BT.getAttribute_Value(), PARALLEL_THRESHOLD);
         }
     }
 
@@ -172,24 +179,26 @@ public class BtValidator extends AbstractBtValidator {
     public void checkSwitch(Switch node) {
         int cases = Integer.parseInt(node.getTag().substring("Switch".length()));
         if (node.attribute("variable") == null) {
-            error(node.getTag() + " needs a variable attribute, e.g. variable=\"{choice}\"", node, BT.getTreeNode_Tag());
+            error(node.getTag() + " needs a variable attribute, e.g. variable=\"{choice}\"", node, BT.getTreeNode_Tag(),
+                    SWITCH_WITHOUT_VARIABLE);
         }
         for (int k = 1; k <= cases; k++) {
             if (node.attribute("case_" + k) == null) {
-                error(node.getTag() + " needs attribute case_" + k, node, BT.getTreeNode_Tag());
+                error(node.getTag() + " needs attribute case_" + k, node, BT.getTreeNode_Tag(), SWITCH_MISSING_CASE,
+                        "case_" + k);
             }
         }
         for (Attribute attribute : node.getAttributes()) {
             String name = attribute.getName();
             if (name.startsWith("case_") && !isCaseOf(name, cases)) {
                 error(node.getTag() + " has only " + cases + " cases: " + name + " is not one of case_1..case_"
-                        + cases, attribute, BT.getAttribute_Name());
+                        + cases, attribute, BT.getAttribute_Name(), SWITCH_EXTRA_CASE, name);
             }
         }
         if (!node.getNodes().isEmpty() && node.getNodes().size() != cases + 1) {
             error(node.getTag() + " with " + cases + " cases needs " + (cases + 1)
                     + " children (one per case and a default last), it has " + node.getNodes().size(),
-                    node, BT.getTreeNode_Tag());
+                    node, BT.getTreeNode_Tag(), SWITCH_CHILD_COUNT);
         }
     }
 
@@ -212,7 +221,8 @@ public class BtValidator extends AbstractBtValidator {
         checkInteger(node, "num_attempts", true, -1);
         if ("RetryUntilSuccesful".equals(node.getTag())) {
             warning("RetryUntilSuccesful is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load "
-                    + "RetryUntilSuccessful", node, BT.getTreeNode_Tag());
+                    + "RetryUntilSuccessful", node, BT.getTreeNode_Tag(), RETRY_OLD_SPELLING,
+                    "RetryUntilSuccessful");
         }
     }
 
@@ -225,13 +235,14 @@ public class BtValidator extends AbstractBtValidator {
     public void checkDelay(Delay node) {
         checkInteger(node, "delay_msec", true, 0);
         warning("Delay needs BehaviorTree.CPP 3.8 or later; earlier 3.x releases do not register it", node,
-                BT.getTreeNode_Tag());
+                BT.getTreeNode_Tag(), DELAY_NEEDS_3_8);
     }
 
     @Check
     public void checkFallbackStar(FallbackStar node) {
         warning("FallbackStar is not registered in BehaviorTree.CPP 3; write Fallback (or ReactiveFallback) "
-                + "for files that must load there", node, BT.getTreeNode_Tag());
+                + "for files that must load there", node, BT.getTreeNode_Tag(), FALLBACK_STAR,
+                "Fallback", "ReactiveFallback");
     }
 
     @Check
@@ -244,7 +255,8 @@ public class BtValidator extends AbstractBtValidator {
             if (mismatch != null && !isBlackboardPointer(mismatch)
                     && !Set.of("SUCCESS", "FAILURE", "RUNNING").contains(mismatch)) {
                 error("return_on_mismatch must be SUCCESS, FAILURE or RUNNING, not '" + mismatch + "'",
-                        attribute(node.getAttributes(), "return_on_mismatch"), BT.getAttribute_Value());
+                        attribute(node.getAttributes(), "return_on_mismatch"), BT.getAttribute_Value(),
+                        BAD_RETURN_ON_MISMATCH);
             }
         }
     }
@@ -261,14 +273,16 @@ public class BtValidator extends AbstractBtValidator {
         boolean explicit = "Action".equals(node.getTag()) || node instanceof Condition
                 || "Control".equals(node.getTag()) || "Decorator".equals(node.getTag());
         if (explicit && node.attribute("ID") == null) {
-            error(node.getTag() + " needs an ID attribute naming the registered node", node, BT.getTreeNode_Tag());
+            error(node.getTag() + " needs an ID attribute naming the registered node", node, BT.getTreeNode_Tag(),
+                    NODE_WITHOUT_ID);
         }
     }
 
     @Check
     public void checkSubtreeId(SubtreeNode node) {
         if (node.getBehaviorTree() == null && !hasIdNode(node)) {
-            error(node.getTag() + " needs an ID attribute naming a BehaviorTree", node, BT.getTreeNode_Tag());
+            error(node.getTag() + " needs an ID attribute naming a BehaviorTree", node, BT.getTreeNode_Tag(),
+                    SUBTREE_WITHOUT_ID);
         }
     }
 
@@ -288,7 +302,8 @@ public class BtValidator extends AbstractBtValidator {
         }
         if (!BtTrees.declaredNodeIds(model.getNodesmodel()).contains(node.getTag())) {
             warning("<" + node.getTag() + "/> is neither a BehaviorTree nor declared in TreeNodesModel; "
-                    + "it must be registered in the executor", node, BT.getTreeNode_Tag());
+                    + "it must be registered in the executor", node, BT.getTreeNode_Tag(), UNDECLARED_NODE,
+                    node.getTag());
         }
     }
 
@@ -310,13 +325,15 @@ public class BtValidator extends AbstractBtValidator {
         int children = node.getNodes().size();
         if (kind == null) {
             warning("<" + node.getTag() + "> is not declared in TreeNodesModel; it must be registered in the "
-                    + "executor as a control node", node, BT.getTreeNode_Tag());
+                    + "executor as a control node", node, BT.getTreeNode_Tag(), UNDECLARED_NODE,
+                    node.getTag());
         } else if (kind.equals("Decorator") && children != 1) {
             error("<" + node.getTag() + "> is declared as a Decorator in TreeNodesModel and needs exactly one child, it has "
-                    + children, node.getNodes().get(1), null);
+                    + children, node.getNodes().get(1), null, DECORATOR_CHILD_COUNT);
         } else if (kind.equals("Action") || kind.equals("Condition")) {
             error("<" + node.getTag() + "> is declared as " + (kind.equals("Action") ? "an " : "a ") + kind
-                    + " in TreeNodesModel and cannot have children", node, BT.getTreeNode_Tag());
+                    + " in TreeNodesModel and cannot have children", node, BT.getTreeNode_Tag(),
+                    LEAF_WITH_CHILDREN);
         }
     }
 
@@ -326,7 +343,7 @@ public class BtValidator extends AbstractBtValidator {
         ILeafNode closing = BtCloseTags.closingName(node);
         if (closing != null && !closing.getText().equals(node.getTag())) {
             acceptError("</" + closing.getText() + "> does not close <" + node.getTag() + ">: write </" + node.getTag()
-                    + ">", node, closing.getOffset(), closing.getLength(), null);
+                    + ">", node, closing.getOffset(), closing.getLength(), CLOSE_TAG_MISMATCH, node.getTag());
         }
     }
 
@@ -335,7 +352,8 @@ public class BtValidator extends AbstractBtValidator {
         Map<String, Attribute> seen = new HashMap<>();
         for (Attribute attribute : node.getAttributes()) {
             if (seen.putIfAbsent(attribute.getName(), attribute) != null) {
-                error("attribute " + attribute.getName() + " is written twice", attribute, BT.getAttribute_Name());
+                error("attribute " + attribute.getName() + " is written twice", attribute, BT.getAttribute_Name(),
+                        DUPLICATE_ATTRIBUTE, attribute.getName());
             }
         }
     }
@@ -345,7 +363,7 @@ public class BtValidator extends AbstractBtValidator {
         Attribute attribute = attribute(node.getAttributes(), port);
         if (attribute == null) {
             if (required) {
-                error(node.getTag() + " needs attribute " + port, node, BT.getTreeNode_Tag());
+                error(node.getTag() + " needs attribute " + port, node, BT.getTreeNode_Tag(), MISSING_ATTRIBUTE, port);
             }
             return null;
         }
@@ -356,18 +374,20 @@ public class BtValidator extends AbstractBtValidator {
         try {
             int number = Integer.parseInt(value);
             if (number < min) {
-                error(port + " must be at least " + min + ", not " + number, attribute, BT.getAttribute_Value());
+                error(port + " must be at least " + min + ", not " + number, attribute, BT.getAttribute_Value(),
+                        INTEGER_TOO_SMALL, String.valueOf(min));
             }
             return number;
         } catch (NumberFormatException e) {
-            error(port + " must be an integer, not '" + attribute.getValue() + "'", attribute, BT.getAttribute_Value());
+            error(port + " must be an integer, not '" + attribute.getValue() + "'", attribute, BT.getAttribute_Value(),
+                    NOT_AN_INTEGER);
             return null;
         }
     }
 
     private void requireAttribute(TreeNode node, String name) {
         if (node.attribute(name) == null) {
-            error(node.getTag() + " needs attribute " + name, node, BT.getTreeNode_Tag());
+            error(node.getTag() + " needs attribute " + name, node, BT.getTreeNode_Tag(), MISSING_ATTRIBUTE, name);
         }
     }
 

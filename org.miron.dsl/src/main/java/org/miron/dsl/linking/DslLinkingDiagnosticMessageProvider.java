@@ -1,8 +1,10 @@
 package org.miron.dsl.linking;
 
+import java.util.ArrayList;
+import java.util.List;
+
 import org.eclipse.emf.ecore.EClass;
 import org.eclipse.emf.ecore.EObject;
-import org.eclipse.xtext.diagnostics.Diagnostic;
 import org.eclipse.xtext.diagnostics.DiagnosticMessage;
 import org.eclipse.xtext.diagnostics.Severity;
 import org.eclipse.xtext.linking.impl.LinkingDiagnosticMessageProvider;
@@ -11,15 +13,19 @@ import org.eclipse.xtext.naming.QualifiedName;
 import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.scoping.IScopeProvider;
 import org.miron.bt.bt.BtPackage;
+import org.miron.bt.util.Suggestions;
 import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.scoping.RoqmeScopeProvider;
+import org.miron.dsl.validation.RoqmeIssueCodes;
 
 import com.google.inject.Inject;
 
 /**
  * Unresolved references, named in the user's terms: what kind of element was expected, what the
- * name denotes instead when it exists with another kind, and how imported names are written.
+ * name denotes instead when it exists with another kind, and how imported names are written. Each
+ * carries a {@link RoqmeIssueCodes} code and, as issue data, what a quick fix needs: the import to
+ * add when a file next to this one declares the name, else the closest visible names ("did you mean").
  */
 public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessageProvider {
 
@@ -29,25 +35,54 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
     @Inject
     private IQualifiedNameConverter nameConverter;
 
+    @Inject
+    private MissingImports missingImports;
+
     @Override
     public DiagnosticMessage getUnresolvedProxyMessage(ILinkingDiagnosticContext context) {
         EClass type = context.getReference().getEReferenceType();
         String text = context.getLinkText();
+        String kind = otherKind(context.getContext(), text);
+        if (kind != null) {
+            return new DiagnosticMessage("unknown " + describe(type) + " '" + text + "': it is " + article(kind)
+                    + ", not " + article(describe(type)), Severity.ERROR, RoqmeIssueCodes.WRONG_KIND_REFERENCE);
+        }
         String message = "unknown " + describe(type) + " '" + text + "'" + hint(context.getContext(), type, text);
-        return new DiagnosticMessage(message, Severity.ERROR, Diagnostic.LINKING_DIAGNOSTIC);
+        String delimiter = text.contains("::") ? "::" : ".";
+        MissingImports.Fix fix = missingImports.find(context.getContext(), context.getReference(),
+                nameConverter.toQualifiedName(text), delimiter);
+        if (fix != null) {
+            return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.MISSING_IMPORT, fix.importLine(),
+                    fix.reference());
+        }
+        return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.UNKNOWN_REFERENCE,
+                closest(context, delimiter));
     }
 
-    private String hint(EObject context, EClass type, String text) {
-        // the name exists, but denotes an element of another kind
+    /** The visible names a reference could take, closest to the text written (for "did you mean"). */
+    private String[] closest(ILinkingDiagnosticContext context, String delimiter) {
+        List<String> names = new ArrayList<>();
+        for (IEObjectDescription d : scopeProvider.getScope(context.getContext(), context.getReference())
+                .getAllElements()) {
+            names.add(String.join(delimiter, d.getName().getSegments()));
+        }
+        return Suggestions.closest(context.getLinkText(), names).toArray(new String[0]);
+    }
+
+    /** What the name denotes when it exists, but as an element of another kind; null otherwise. */
+    private String otherKind(EObject context, String text) {
         QualifiedName name = nameConverter.toQualifiedName(text);
         if (scopeProvider instanceof RoqmeScopeProvider) {
             for (IEObjectDescription d : ((RoqmeScopeProvider) scopeProvider).visible(context.eResource())) {
                 if (d.getName().equals(name)) {
-                    String found = d.getEClass() == RoqmePackage.Literals.BELIEF_VARIABLE ? "belief" : describe(d.getEClass());
-                    return ": it is " + article(found) + ", not " + article(describe(type));
+                    return d.getEClass() == RoqmePackage.Literals.BELIEF_VARIABLE ? "belief" : describe(d.getEClass());
                 }
             }
         }
+        return null;
+    }
+
+    private String hint(EObject context, EClass type, String text) {
         if (type == RoqmePackage.Literals.ENUM_LITERAL) {
             return " (write Type::LITERAL, variable::literal, or alias::Type::LITERAL for an imported one)";
         }

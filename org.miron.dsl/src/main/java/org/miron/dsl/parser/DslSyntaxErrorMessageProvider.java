@@ -1,13 +1,14 @@
 package org.miron.dsl.parser;
 
-import static org.eclipse.xtext.diagnostics.Diagnostic.SYNTAX_DIAGNOSTIC;
+import static org.miron.dsl.validation.RoqmeIssueCodes.SYNTAX_ERROR;
 
 import org.antlr.runtime.FailedPredicateException;
 import org.antlr.runtime.RecognitionException;
+import org.eclipse.xtext.diagnostics.Diagnostic;
 import org.eclipse.xtext.nodemodel.SyntaxErrorMessage;
 import org.eclipse.xtext.parser.antlr.SyntaxErrorMessageProvider;
 
-/** Rewords the parser messages that would make no sense to a modeller. */
+/** Rewords the parser messages that would make no sense to a modeller; all carry RoqmeIssueCodes.SYNTAX_ERROR. */
 public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
 
     @Override
@@ -16,7 +17,7 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
             String rule = ((FailedPredicateException) context.getRecognitionException()).ruleName;
             if (rule != null && rule.contains("ArchBinding")) {
                 return new SyntaxErrorMessage("an arch binding needs parameterSetRepository, parameterSet, component"
-                        + " and parameter, each exactly once (in any order)", SYNTAX_DIAGNOSTIC);
+                        + " and parameter, each exactly once (in any order)", SYNTAX_ERROR);
             }
         }
         RecognitionException e = context.getRecognitionException();
@@ -24,17 +25,24 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
             // documentation comments are tokens, not hidden: they belong to the next declaration
             return new SyntaxErrorMessage("a documentation comment /** ... */ must come right before a declaration"
                     + " (model header, import, type, context, param, var, timer, beliefvar, property, observation,"
-                    + " varpoint or rule); write /* ... */ for other comments", SYNTAX_DIAGNOSTIC);
+                    + " varpoint or rule); write /* ... */ for other comments", SYNTAX_ERROR);
         }
         SyntaxErrorMessage message = super.getSyntaxErrorMessage(context);
         String text = readable(message.getMessage(), isKeyword(context));
         if (text != null && text.startsWith("missing EOF at ")) {
             // the parser finished a complete element and cannot start another one here
             return new SyntaxErrorMessage("unexpected " + text.substring("missing EOF at ".length())
-                    + ": the element before it is complete and no declaration starts here", SYNTAX_DIAGNOSTIC);
+                    + ": the element before it is complete and no declaration starts here", SYNTAX_ERROR);
         }
-        return text == null || text.equals(message.getMessage()) ? message
-                : new SyntaxErrorMessage(text, message.getIssueCode(), message.getIssueData());
+        return new SyntaxErrorMessage(text == null ? message.getMessage() : text, SYNTAX_ERROR, message.getIssueData());
+    }
+
+    @Override
+    public SyntaxErrorMessage getSyntaxErrorMessage(IValueConverterErrorContext context) {
+        SyntaxErrorMessage message = super.getSyntaxErrorMessage(context);
+        // a ranged message keeps Xtext's code: Xtext recognises it by that code to mark part of a token
+        return Diagnostic.SYNTAX_DIAGNOSTIC_WITH_RANGE.equals(message.getIssueCode()) ? message
+                : new SyntaxErrorMessage(message.getMessage(), SYNTAX_ERROR, message.getIssueData());
     }
 
     /** Whether the offending token is a keyword (a word that is not an identifier). */

@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.MironIssueCodes.*;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -39,7 +40,8 @@ public class BindingChecks extends CheckSet {
         VariationPoint vp = (VariationPoint) binding.eContainer();
         if (Types.dataType(vp) instanceof EnumType) {
             error("enum varpoint '" + vp.getName() + "' cannot be bound to 'arch': only parameters (numbers, booleans) can;"
-                    + " bind it to a behavior tree node instead", vp, M.getVariationPoint_Binding());
+                    + " bind it to a behavior tree node instead", vp, M.getVariationPoint_Binding(),
+                    ENUM_ARCH_BINDING);
         }
     }
 
@@ -51,7 +53,8 @@ public class BindingChecks extends CheckSet {
         if (binding.getXpath() == null) {
             if (numeric) {
                 error("numeric varpoint '" + vp.getName() + "' must be bound to a BT node attribute (a port): add an XPath"
-                        + " selecting it, e.g. in \"@speed\" " + targetText(binding, 0), binding, M.getBtBinding_Targets(), 0);
+                        + " selecting it, e.g. in \"@speed\" " + targetText(binding, 0), binding, M.getBtBinding_Targets(), 0,
+                        NUMERIC_BINDING_NEEDS_XPATH);
             }
             return;
         }
@@ -62,28 +65,30 @@ public class BindingChecks extends CheckSet {
             }
             BtXPath.Result result = BtXPath.evaluate(binding.getXpath(), target);
             if (result.error != null) {
-                error(result.error, binding, M.getBtBinding_Xpath());
+                error(result.error, binding, M.getBtBinding_Xpath(), XPATH_ERROR);
                 return;
             }
             if (result.selections.isEmpty()) {
                 error("XPath '" + binding.getXpath() + "' selects nothing in " + targetText(binding, i)
-                        + " of " + target.eResource().getURI().lastSegment(), binding, M.getBtBinding_Xpath());
+                        + " of " + target.eResource().getURI().lastSegment(), binding, M.getBtBinding_Xpath(),
+                        XPATH_SELECTS_NOTHING);
                 continue;
             }
             for (BtXPath.Selection s : result.selections) {
                 if (numeric && !s.isAttribute()) {
                     error("numeric varpoint '" + vp.getName() + "' is bound to " + s.describe()
                             + ", which is not an attribute: the XPath must select a port such as @speed",
-                            binding, M.getBtBinding_Xpath());
+                            binding, M.getBtBinding_Xpath(), XPATH_NOT_ATTRIBUTE);
                     break;
                 } else if (binding.getInsertionType() != InsertionType.IN && !s.isTreeNode()) {
                     error("varpoint '" + vp.getName() + "': '" + binding.getInsertionType().getLiteral()
                             + "' needs tree nodes, but the XPath selects "
-                            + s.describe(), binding, M.getBtBinding_Xpath());
+                            + s.describe(), binding, M.getBtBinding_Xpath(), XPATH_NOT_TREE_NODE);
                     break;
                 } else if (type instanceof BehaviorTreeEnumType && !s.isTreeNode()) {
                     error("varpoint '" + vp.getName() + "' switches behaviour trees, so it must be bound to tree nodes,"
-                            + " but the XPath selects " + s.describe(), binding, M.getBtBinding_Xpath());
+                            + " but the XPath selects " + s.describe(), binding, M.getBtBinding_Xpath(),
+                            XPATH_NOT_TREE_NODE);
                     break;
                 }
             }
@@ -122,7 +127,7 @@ public class BindingChecks extends CheckSet {
                         error("varpoint '" + vp.getName() + "' is bound in the same " + what + " as varpoint '"
                                 + first.getName() + "': only one varpoint can replace or set it", binding,
                                 binding.getXpath() == null ? M.getBtBinding_Targets() : M.getBtBinding_Xpath(),
-                                binding.getXpath() == null ? i : -1);
+                                binding.getXpath() == null ? i : -1, SHARED_TARGET);
                     }
                 }
             }

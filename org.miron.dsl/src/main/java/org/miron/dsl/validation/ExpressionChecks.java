@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.RoqmeIssueCodes.*;
 import static org.miron.dsl.validation.Texts.text;
 
 import java.util.HashMap;
@@ -58,9 +59,11 @@ public class ExpressionChecks extends CheckSet {
                 break;
             }
             if (!l.isNumeric()) {
-                error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left());
+                error("'" + op + "' needs numbers, but the left operand is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isNumeric()) {
-                error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right());
+                error("'" + op + "' needs numbers, but the right operand is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
             break;
         case PLUS:
@@ -68,24 +71,30 @@ public class ExpressionChecks extends CheckSet {
         case TIMES:
         case DIVIDE:
             if (!l.isNumeric()) {
-                error("'" + op + "' needs numbers, but the left operand is " + l, e, R.getBinaryExpression_Left());
+                error("'" + op + "' needs numbers, but the left operand is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isNumeric()) {
-                error("'" + op + "' needs numbers, but the right operand is " + r, e, R.getBinaryExpression_Right());
+                error("'" + op + "' needs numbers, but the right operand is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
             break;
         case LOGICAL_AND:
         case LOGICAL_OR:
             if (!l.isLogical()) {
-                error("'" + op + "' needs boolean or event operands, but the left one is " + l, e, R.getBinaryExpression_Left());
+                error("'" + op + "' needs boolean or event operands, but the left one is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isLogical()) {
-                error("'" + op + "' needs boolean or event operands, but the right one is " + r, e, R.getBinaryExpression_Right());
+                error("'" + op + "' needs boolean or event operands, but the right one is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
             break;
         default: // event operators: or, and, ->
             if (!l.isEventLike()) {
-                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l, e, R.getBinaryExpression_Left());
+                error("'" + op + "' needs events, booleans or enums, but the left operand is " + l,
+                        e, R.getBinaryExpression_Left(), OPERAND_TYPE);
             } else if (!r.isEventLike()) {
-                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r, e, R.getBinaryExpression_Right());
+                error("'" + op + "' needs events, booleans or enums, but the right operand is " + r,
+                        e, R.getBinaryExpression_Right(), OPERAND_TYPE);
             }
         }
     }
@@ -100,10 +109,11 @@ public class ExpressionChecks extends CheckSet {
             String literal = literalSide instanceof EnumValue ? text(literalSide) : "value of " + Types.typeOf(literalSide);
             error("cannot compare '" + text(other) + "' (" + Types.typeOf(other) + ") with '" + literal
                     + "', a literal of another enum (" + Types.typeOf(literalSide) + ")", e,
-                    literalSide == e.getRight() ? R.getBinaryExpression_Right() : R.getBinaryExpression_Left());
+                    literalSide == e.getRight() ? R.getBinaryExpression_Right() : R.getBinaryExpression_Left(),
+                    INCOMPARABLE);
         } else {
             error("cannot compare '" + text(e.getLeft()) + "' (" + l + ") with '" + text(e.getRight()) + "' (" + r
-                    + ") using '" + op + "'", e, R.getBinaryExpression_Right());
+                    + ") using '" + op + "'", e, R.getBinaryExpression_Right(), OPERAND_TYPE);
         }
     }
 
@@ -113,18 +123,18 @@ public class ExpressionChecks extends CheckSet {
         switch (e.getOperator()) {
         case MINUS:
             if (!t.isNumeric()) {
-                error("'-' needs a number, not " + t, e, R.getUnaryExpression_Term());
+                error("'-' needs a number, not " + t, e, R.getUnaryExpression_Term(), OPERAND_TYPE);
             }
             break;
         case LOGICAL_NOT:
             if (!t.isLogical()) {
-                error("'!' needs a boolean or event operand, not " + t, e, R.getUnaryExpression_Term());
+                error("'!' needs a boolean or event operand, not " + t, e, R.getUnaryExpression_Term(), OPERAND_TYPE);
             }
             break;
         default: // not, once
             if (!t.isEventLike()) {
                 error("'" + e.getOperator().getLiteral() + "' needs an event, boolean or enum operand, not " + t, e,
-                        R.getUnaryExpression_Term());
+                        R.getUnaryExpression_Term(), OPERAND_TYPE);
             }
         }
     }
@@ -133,13 +143,13 @@ public class ExpressionChecks extends CheckSet {
     public void checkConditional(ConditionalExpression e) {
         ExprType c = Types.typeOf(e.getCondition());
         if (!c.isLogical()) {
-            error("the condition of '?:' must be boolean, not " + c, e, R.getConditionalExpression_Condition());
+            error("the condition of '?:' must be boolean, not " + c, e, R.getConditionalExpression_Condition(), CONDITION_TYPE);
         }
         ExprType a = Types.typeOf(e.getIfTrue());
         ExprType b = Types.typeOf(e.getIfFalse());
         if (!a.comparableWith(b)) {
             error("both branches of '?:' must have the same type, not " + a + " and " + b, e,
-                    R.getConditionalExpression_IfFalse());
+                    R.getConditionalExpression_IfFalse(), BRANCH_TYPES);
         }
     }
 
@@ -147,7 +157,7 @@ public class ExpressionChecks extends CheckSet {
     public void checkWhile(WhileExpression e) {
         if (!Types.typeOf(e.getCondition()).isLogical()) {
             error("the condition of 'while' must be boolean, not " + Types.typeOf(e.getCondition()), e,
-                    R.getWhileExpression_Condition());
+                    R.getWhileExpression_Condition(), CONDITION_TYPE);
         }
     }
 
@@ -155,7 +165,7 @@ public class ExpressionChecks extends CheckSet {
     public void checkRepeat(RepeatExpression e) {
         if (e.getTimes() <= 0) {
             error("repeat count must be positive, not " + e.getTimes() + " (in '" + Names.ownerName(e) + "')", e,
-                    R.getRepeatExpression_Times());
+                    R.getRepeatExpression_Times(), REPEAT_COUNT);
         }
     }
 
@@ -163,7 +173,7 @@ public class ExpressionChecks extends CheckSet {
     public void checkRange(RangeExpression e) {
         if (e.getMin() > e.getMax()) {
             error("range(" + e.getMin() + ", " + e.getMax() + ") is empty: the minimum exceeds the maximum", e,
-                    R.getRangeExpression_Min());
+                    R.getRangeExpression_Min(), EMPTY_RANGE_EXPRESSION);
         }
     }
 
@@ -174,7 +184,7 @@ public class ExpressionChecks extends CheckSet {
         if (arity != null && (n < arity[0] || n > arity[1])) {
             String expected = arity[0] == arity[1] ? String.valueOf(arity[0]) : arity[0] + " or " + arity[1];
             error("function '" + call.getFunction() + "' takes " + expected + " argument(s), not " + n, call,
-                    R.getFunctionCall_Function());
+                    R.getFunctionCall_Function(), FUNCTION_ARITY);
         }
     }
 }

@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.MironIssueCodes.*;
 import static org.miron.dsl.validation.Texts.line;
 
 import java.util.HashMap;
@@ -35,7 +36,7 @@ public class MironValidator extends AbstractMironValidator {
             String alias = Imports.aliasOf(imp);
             if (alias != null && seen.putIfAbsent(alias, imp) != null) {
                 error("alias '" + alias + "' is already used by the import at line " + line(seen.get(alias)), imp,
-                        M.getImport_Alias());
+                        M.getImport_Alias(), DUPLICATE_ALIAS, alias);
             }
         }
     }

@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.RoqmeIssueCodes.*;
 import static org.miron.dsl.validation.Texts.line;
 
 import java.util.HashMap;
@@ -50,7 +51,7 @@ public class NamingChecks extends CheckSet {
             EObject first = seen.putIfAbsent(name, obj);
             if (first != null) {
                 error("duplicate name '" + name + "': already declared at line " + line(first),
-                        obj, obj.eClass().getEStructuralFeature("name"));
+                        obj, obj.eClass().getEStructuralFeature("name"), DUPLICATE_NAME, name);
             }
         }
     }
@@ -61,7 +62,7 @@ public class NamingChecks extends CheckSet {
         for (EnumLiteral literal : type.getLiterals()) {
             if (literal.getName() != null && !seen.add(literal.getName())) {
                 error("enum literal '" + literal.getName() + "' is repeated in " + Names.enumName(type),
-                        literal, R.getEnumLiteral_Name());
+                        literal, R.getEnumLiteral_Name(), DUPLICATE_LITERAL, literal.getName());
             }
         }
     }
@@ -87,7 +88,8 @@ public class NamingChecks extends CheckSet {
                         where.append(where.length() == 0 ? "" : ", ").append(uri.trimFragment().lastSegment());
                     }
                     error("ambiguous reference '" + text + "': " + targets.size() + " elements have this name (in "
-                            + where + "); import one of the files with an alias", obj, ref, ref.isMany() ? i : -1);
+                            + where + "); import one of the files with an alias", obj, ref, ref.isMany() ? i : -1,
+                            AMBIGUOUS_REFERENCE);
                 }
             }
         }

@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.RoqmeIssueCodes.*;
 import static org.miron.dsl.validation.Texts.fmt;
 import static org.miron.dsl.validation.Texts.range;
 
@@ -88,18 +89,19 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     @Check
     public void checkImport(Import imp) {
         if (imp.getImportURI() == null || imp.getImportURI().isEmpty()) {
-            error("empty import path", imp, R.getImport_ImportURI());
+            error("empty import path", imp, R.getImport_ImportURI(), EMPTY_IMPORT);
             return;
         }
         String extension = Imports.uriOf(imp) == null ? null : Imports.uriOf(imp).fileExtension();
         if (extension == null || !allowedImports().contains(extension)) {
             error("cannot import '" + imp.getImportURI() + "': only " + String.join(", ", allowedImports())
-                    + " files can be imported here", imp, R.getImport_ImportURI());
+                    + " files can be imported here", imp, R.getImport_ImportURI(), IMPORT_NOT_ALLOWED,
+                    allowedImports().toArray(new String[0]));
         } else if (Imports.uriOf(imp) != null && Imports.uriOf(imp).equals(imp.eResource().getURI())) {
-            error("a file cannot import itself", imp, R.getImport_ImportURI());
+            error("a file cannot import itself", imp, R.getImport_ImportURI(), SELF_IMPORT);
         } else if (importedResources.description(imp) == null) {
             error("cannot find imported file '" + imp.getImportURI() + "' (paths are relative to this file)",
-                    imp, R.getImport_ImportURI());
+                    imp, R.getImport_ImportURI(), IMPORT_NOT_FOUND);
         }
     }
 
@@ -117,11 +119,11 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         if (lo != null && hi != null && lo >= hi) {
             error("empty range of '" + Names.ownerName(type) + "': lower bound " + fmt(lo)
                     + " must be less than upper bound " + fmt(hi),
-                    type, R.getBoundedType_Lower());
+                    type, R.getBoundedType_Lower(), EMPTY_RANGE);
         }
         if (type.getPrecision() != null && type.getPrecision() <= 0) {
             error("precision of '" + Names.ownerName(type) + "' must be positive, not " + fmt(type.getPrecision()),
-                    type, R.getBoundedType_Precision());
+                    type, R.getBoundedType_Precision(), PRECISION_NOT_POSITIVE);
         }
     }
 
@@ -134,7 +136,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             NumericType n = (NumericType) type;
             if ((n.getLower() != null && v < n.getLower()) || (n.getUpper() != null && v > n.getUpper())) {
                 error("default value " + fmt(v) + " of '" + param.getName() + "' is outside its range "
-                        + range(n), param, R.getTypedVariable_InitializedTo());
+                        + range(n), param, R.getTypedVariable_InitializedTo(), DEFAULT_OUT_OF_RANGE);
             }
         }
     }
@@ -156,7 +158,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             ExprType value = Types.typeOf(sets.getValue());
             if (!target.comparableWith(value)) {
                 error("cannot set '" + sets.getVariable().getName() + "' (" + target + ") to a value of type "
-                        + value, sets, R.getSets_Value());
+                        + value, sets, R.getSets_Value(), TYPE_MISMATCH);
             }
         }
     }
@@ -170,12 +172,12 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         ExprType actual = Types.typeOf(e);
         if (declared.kind == ExprType.Kind.ENUM && actual.kind == ExprType.Kind.ENUM && declared.enumType != actual.enumType) {
             error(what + " of '" + v.getName() + "' is a literal of " + actual + ", but '" + v.getName() + "' is "
-                    + declared, v, feature);
+                    + declared, v, feature, ENUM_MISMATCH);
         } else if (!declared.comparableWith(actual)
                 && !(declared.kind == ExprType.Kind.EVENT && actual.isEventLike())
                 && !(declared.kind == ExprType.Kind.BOOLEAN && actual.kind == ExprType.Kind.EVENT)) {
             error(what + " of '" + v.getName() + "' has type " + actual + ", but '" + v.getName() + "' is declared "
-                    + declared, v, feature);
+                    + declared, v, feature, TYPE_MISMATCH);
         }
     }
 
@@ -186,13 +188,13 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         Double ref = belief.getReference();
         if (ref != null && (ref < 0 || ref > 1)) {
             error("reference of '" + belief.getName() + "' must be in [0,1], not " + fmt(ref), belief,
-                    R.getBeliefVariable_Reference());
+                    R.getBeliefVariable_Reference(), REFERENCE_OUT_OF_RANGE);
         }
         if (belief instanceof Property) {
             Property p = (Property) belief;
             if (p.getInitializedTo() != null && !Types.typeOf(p.getInitializedTo()).isNumeric()) {
                 error("property '" + p.getName() + "' is a number in [0,1], but its definition has type "
-                        + Types.typeOf(p.getInitializedTo()), p, R.getProperty_InitializedTo());
+                        + Types.typeOf(p.getInitializedTo()), p, R.getProperty_InitializedTo(), TYPE_MISMATCH);
             }
         }
     }
@@ -205,7 +207,8 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
             String owner = time.eContainer() instanceof EvidenceAction
                     ? "the evidence in '" + Names.ownerName(time) + "'"
                     : "'" + Names.ownerName(time) + "'";
-            error("survival of " + owner + " must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value());
+            error("survival of " + owner + " must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value(),
+                    SURVIVAL_NOT_POSITIVE);
         }
     }
 
@@ -213,7 +216,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
     public void checkTimer(Timer timer) {
         if (timer.getCondition() != null && !Types.typeOf(timer.getCondition()).isEventLike()) {
             error("timer '" + timer.getName() + "' needs a boolean or event pattern, not "
-                    + Types.typeOf(timer.getCondition()), timer, R.getTimer_Condition());
+                    + Types.typeOf(timer.getCondition()), timer, R.getTimer_Condition(), PATTERN_TYPE);
         }
     }
 
@@ -222,7 +225,7 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
         ExprType t = Types.typeOf(observation.getPattern());
         if (!t.isEventLike()) {
             error("the pattern of observation '" + observation.getName() + "' must be boolean or an event, not " + t,
-                    observation, R.getObservation_Pattern());
+                    observation, R.getObservation_Pattern(), PATTERN_TYPE);
         }
     }
 }

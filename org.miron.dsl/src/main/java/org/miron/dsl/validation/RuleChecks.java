@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.MironIssueCodes.*;
 import static org.miron.dsl.validation.Texts.fmt;
 import static org.miron.dsl.validation.Texts.range;
 
@@ -35,17 +36,17 @@ public class RuleChecks extends CheckSet {
             ExprType t = Types.typeOf(rule.getCondition().getTerm());
             if (t.kind != ExprType.Kind.BOOLEAN && !t.isUnknown()) {
                 error("the condition of rule '" + rule.getName() + "' must be boolean, not " + t, rule.getCondition(),
-                        M.getCondition_Term());
+                        M.getCondition_Term(), RULE_CONDITION_TYPE);
             }
         }
         for (Constraint c : rule.getImplies()) {
             ExprType t = Types.typeOf(c.getTerm());
             if (t.kind != ExprType.Kind.BOOLEAN && !t.isUnknown()) {
                 error("consequence of rule '" + rule.getName() + "' must be a boolean constraint, not " + t, c,
-                        M.getConstraint_Term());
+                        M.getConstraint_Term(), CONSEQUENCE_TYPE);
             } else if (!constrainsVarpoint(c)) {
                 error("consequence of rule '" + rule.getName() + "' does not constrain any varpoint", c,
-                        M.getConstraint_Term());
+                        M.getConstraint_Term(), CONSEQUENCE_WITHOUT_VARPOINT);
             }
         }
     }
@@ -77,10 +78,11 @@ public class RuleChecks extends CheckSet {
         String name = ((VariableRef) side).getVariable().getName();
         EReference feature = value == e.getRight() ? R.getBinaryExpression_Right() : R.getBinaryExpression_Left();
         if ((n.getLower() != null && v < n.getLower()) || (n.getUpper() != null && v > n.getUpper())) {
-            error("varpoint '" + name + "' can never be " + fmt(v) + ": it is outside its range " + range(n), e, feature);
+            error("varpoint '" + name + "' can never be " + fmt(v) + ": it is outside its range " + range(n), e, feature,
+                    VALUE_OUT_OF_RANGE);
         } else if (n.getPrecision() != null && n.getPrecision() > 0 && !VarpointTypeChecks.onGrid(v, n)) {
             error("varpoint '" + name + "' can never be " + fmt(v) + ": it is not on its precision grid "
-                    + fmt(n.getLower() == null ? 0 : n.getLower()) + " + k*" + fmt(n.getPrecision()), e, feature);
+                    + fmt(n.getLower() == null ? 0 : n.getLower()) + " + k*" + fmt(n.getPrecision()), e, feature, VALUE_OFF_GRID);
         }
     }
 

@@ -1,5 +1,6 @@
 package org.miron.dsl.validation;
 
+import static org.miron.dsl.validation.MironIssueCodes.*;
 import static org.miron.dsl.validation.Texts.fmt;
 import static org.miron.dsl.validation.Texts.range;
 
@@ -36,12 +37,12 @@ public class VarpointTypeChecks extends CheckSet {
         String owner = Names.enumName(type);
         if (presets.isEmpty()) {
             error("behavior tree enum of '" + owner + "' needs exactly one 'preset' literal (the nominal behaviour), found none",
-                    type, R.getEnumType_Literals(), 0);
+                    type, R.getEnumType_Literals(), 0, PRESET_MISSING);
         }
         for (int i = 1; i < presets.size(); i++) {
             error("behavior tree enum of '" + owner + "' needs exactly one 'preset' literal, but '"
                     + presets.get(i).getName() + "' is a second one after '" + presets.get(0).getName() + "'",
-                    presets.get(i), M.getBehaviorTreeLiteral_Preset());
+                    presets.get(i), M.getBehaviorTreeLiteral_Preset(), PRESET_DUPLICATE);
         }
     }
 
@@ -55,15 +56,15 @@ public class VarpointTypeChecks extends CheckSet {
             double v = sample.getValue().getValue();
             if ((type.getLower() != null && v < type.getLower()) || (type.getUpper() != null && v > type.getUpper())) {
                 error("sample " + fmt(v) + " of '" + Names.ownerName(type) + "' is outside the declared range " + range(type),
-                        sample, M.getSampleValue_Value());
+                        sample, M.getSampleValue_Value(), SAMPLE_OUT_OF_RANGE);
             } else if (type.getPrecision() != null && type.getPrecision() > 0 && !onGrid(v, type)) {
                 double base = type.getLower() == null ? 0 : type.getLower();
                 error("sample " + fmt(v) + " of '" + Names.ownerName(type) + "' is not on the precision grid " + fmt(base)
                         + " + k*" + fmt(type.getPrecision()),
-                        sample, M.getSampleValue_Value());
+                        sample, M.getSampleValue_Value(), SAMPLE_OFF_GRID);
             } else if (!seen.add(v)) {
                 error("sample " + fmt(v) + " of '" + Names.ownerName(type) + "' is declared twice", sample,
-                        M.getSampleValue_Value());
+                        M.getSampleValue_Value(), SAMPLE_DUPLICATE);
             }
         }
     }
@@ -81,7 +82,7 @@ public class VarpointTypeChecks extends CheckSet {
         for (ImpactOnQuality impact : value.getImpacts()) {
             if (impact.getProperty() != null && !impact.getProperty().eIsProxy() && !seen.add(impact.getProperty())) {
                 error("impact on '" + impact.getProperty().getName() + "' is declared twice", impact,
-                        M.getImpactOnQuality_Property());
+                        M.getImpactOnQuality_Property(), IMPACT_DUPLICATE);
             }
         }
     }

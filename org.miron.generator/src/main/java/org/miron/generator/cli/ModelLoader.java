@@ -84,7 +84,9 @@ public class ModelLoader {
                 };
                 if (severity != null) {
                     diagnostics.add(new Diagnostic(displayPath(resource.getURI()), number(issue.getLineNumber()),
-                            number(issue.getColumn()), severity, issue.getMessage()));
+                            number(issue.getColumn()), number(issue.getLineNumberEnd()), number(issue.getColumnEnd()),
+                            severity, issue.getCode(), issue.getData() == null ? List.of() : List.of(issue.getData()),
+                            issue.getMessage()));
                 }
             }
         }

@@ -50,7 +50,8 @@ public class CliTest {
     public void errorsArePrintedWithFileLineAndColumn() throws IOException {
         File file = write("broken.bt", "<root>\n  <BehaviorTree ID=\"M\">\n    <Inverter/>\n  </BehaviorTree>\n</root>\n");
         assertEquals(1, miron("check", file.getPath()));
-        assertEquals(file.getPath() + ":3:6: error: Inverter needs exactly one child, it has none\n",
+        assertEquals(file.getPath()
+                + ":3:6: error [bt.decorator-child-count]: Inverter needs exactly one child, it has none\n",
                 out.toString().replace(System.lineSeparator(), "\n"));
     }
 
@@ -61,14 +62,15 @@ public class CliTest {
                 + "  <BehaviorTree ID=\"Main\"><SubTree ID=\"Nav\"/></BehaviorTree>\n</root>\n");
         assertEquals(1, miron("check", main.getPath()));
         assertTrue(out.toString(), out.toString().contains(
-                new File(temp.getRoot(), "lib/nav.bt").getPath() + ":2:27: error: Sequence needs at least one child"));
+                new File(temp.getRoot(), "lib/nav.bt").getPath()
+                        + ":2:27: error [bt.control-without-children]: Sequence needs at least one child"));
     }
 
     @Test
     public void warningsDoNotFailTheCheck() throws IOException {
         File file = write("old.bt", "<root><BehaviorTree ID=\"M\"><FallbackStar><AlwaysSuccess/></FallbackStar></BehaviorTree></root>");
         assertEquals(0, miron("check", file.getPath()));
-        assertTrue(out.toString(), out.toString().startsWith(file.getPath() + ":1:29: warning: FallbackStar"));
+        assertTrue(out.toString(), out.toString().startsWith(file.getPath() + ":1:29: warning [bt.fallback-star]: FallbackStar"));
     }
 
     @Test
@@ -76,7 +78,8 @@ public class CliTest {
         File good = write("good.bt", "<root><BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree></root>");
         File bad = write("bad.xml", "<root><BehaviorTree ID=\"B\"><SubTree ID=\"Nope\"/></BehaviorTree></root>");
         assertEquals(1, miron("check", good.getPath(), bad.getPath()));
-        assertTrue(out.toString(), out.toString().startsWith(bad.getPath() + ":1:40: error: unknown SubTree ID 'Nope'"));
+        assertTrue(out.toString(),
+                out.toString().startsWith(bad.getPath() + ":1:40: error [bt.unknown-subtree]: unknown SubTree ID 'Nope'"));
     }
 
     @Test

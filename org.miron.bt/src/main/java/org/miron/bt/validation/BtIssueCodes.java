@@ -1,0 +1,96 @@
+package org.miron.bt.validation;
+
+/**
+ * The stable issue code of every diagnostic of the BT language (see docs/issue-codes.md). A code
+ * is {@code bt.} plus a kebab-case name; once published it never changes meaning, so tools and
+ * quick fixes can rely on it while the message text is reworded. Where a fix is obvious the
+ * issue data carries what it needs, as documented on the constant.
+ */
+public final class BtIssueCodes {
+    private BtIssueCodes() {
+    }
+
+    // ------------------------------------------------------------------ parsing and linking
+
+    /** The file is not well-formed BT XML (parser, lexer or XML entity error). */
+    public static final String SYNTAX_ERROR = "bt.syntax-error";
+    /** A SubTree ID names no tree. Data: the closest visible tree IDs, nearest first (may be empty). */
+    public static final String UNKNOWN_SUBTREE = "bt.unknown-subtree";
+    /**
+     * A SubTree ID that no visible tree has, but a .bt file in the same folder, not included yet,
+     * defines. Data: the include to add, e.g. {@code <include path="nav.bt"/>}.
+     */
+    public static final String MISSING_INCLUDE = "bt.missing-include";
+    /** Any other unresolved reference. Data: the closest visible names, nearest first. */
+    public static final String UNKNOWN_REFERENCE = "bt.unknown-reference";
+
+    // ------------------------------------------------------------------ files and trees
+
+    /** Several trees and no main_tree_to_execute. */
+    public static final String MAIN_TREE_REQUIRED = "bt.main-tree-required";
+    /** main_tree_to_execute names no tree. Data: the closest visible tree IDs, nearest first. */
+    public static final String UNKNOWN_MAIN_TREE = "bt.unknown-main-tree";
+    /** An include path that does not resolve to a file. */
+    public static final String INCLUDE_NOT_FOUND = "bt.include-not-found";
+    /** A file that includes itself. */
+    public static final String SELF_INCLUDE = "bt.self-include";
+    /** A BehaviorTree without ID. */
+    public static final String TREE_WITHOUT_ID = "bt.tree-without-id";
+    /** A BehaviorTree ID used twice (in the file or its includes). */
+    public static final String DUPLICATE_TREE_ID = "bt.duplicate-tree-id";
+    /** A BehaviorTree with no root node. */
+    public static final String TREE_WITHOUT_ROOT = "bt.tree-without-root";
+    /** A BehaviorTree with more than one root node (reported on each extra root). */
+    public static final String TREE_SEVERAL_ROOTS = "bt.tree-several-roots";
+
+    // ------------------------------------------------------------------ node structure
+
+    /** A control node without children. */
+    public static final String CONTROL_WITHOUT_CHILDREN = "bt.control-without-children";
+    /** IfThenElse / WhileDoElse without 2 or 3 children. */
+    public static final String CONDITIONAL_CHILD_COUNT = "bt.conditional-child-count";
+    /** A decorator (built-in or declared in TreeNodesModel) without exactly one child. */
+    public static final String DECORATOR_CHILD_COUNT = "bt.decorator-child-count";
+    /** A node declared as an Action or a Condition in TreeNodesModel, written with children. */
+    public static final String LEAF_WITH_CHILDREN = "bt.leaf-with-children";
+    /** A closing tag that does not match its opening tag. Data: the tag to close, e.g. {@code Sequence}. */
+    public static final String CLOSE_TAG_MISMATCH = "bt.close-tag-mismatch";
+
+    // ------------------------------------------------------------------ attributes and ports
+
+    /** A required attribute is missing. Data: the attribute's name. */
+    public static final String MISSING_ATTRIBUTE = "bt.missing-attribute";
+    /** An attribute written twice on one element. Data: the attribute's name. */
+    public static final String DUPLICATE_ATTRIBUTE = "bt.duplicate-attribute";
+    /** An integer port whose value is not an integer. */
+    public static final String NOT_AN_INTEGER = "bt.not-an-integer";
+    /** An integer port below its minimum. Data: the minimum. */
+    public static final String INTEGER_TOO_SMALL = "bt.integer-too-small";
+    /** A Parallel threshold that does not fit its number of children. */
+    public static final String PARALLEL_THRESHOLD = "bt.parallel-threshold";
+    /** return_on_mismatch of a BlackboardCheck that is not SUCCESS, FAILURE or RUNNING. */
+    public static final String BAD_RETURN_ON_MISMATCH = "bt.bad-return-on-mismatch";
+    /** Action, Condition, Control or Decorator without the ID of the registered node. */
+    public static final String NODE_WITHOUT_ID = "bt.node-without-id";
+    /** SubTree / SubTreePlus without ID. */
+    public static final String SUBTREE_WITHOUT_ID = "bt.subtree-without-id";
+    /** SwitchN without a variable attribute. */
+    public static final String SWITCH_WITHOUT_VARIABLE = "bt.switch-without-variable";
+    /** SwitchN without one of case_1..case_N. Data: the missing attribute, e.g. {@code case_2}. */
+    public static final String SWITCH_MISSING_CASE = "bt.switch-missing-case";
+    /** SwitchN with a case_k beyond N. Data: the attribute's name. */
+    public static final String SWITCH_EXTRA_CASE = "bt.switch-extra-case";
+    /** SwitchN without N+1 children. */
+    public static final String SWITCH_CHILD_COUNT = "bt.switch-child-count";
+
+    // ------------------------------------------------------------------ portability (warnings)
+
+    /** RetryUntilSuccesful, the 3.5-3.6 spelling. Data: the replacement tag, {@code RetryUntilSuccessful}. */
+    public static final String RETRY_OLD_SPELLING = "bt.retry-old-spelling";
+    /** FallbackStar, unknown to BehaviorTree.CPP 3. Data: the replacement tags, {@code Fallback} first. */
+    public static final String FALLBACK_STAR = "bt.fallback-star";
+    /** Delay, registered from BehaviorTree.CPP 3.8 on. */
+    public static final String DELAY_NEEDS_3_8 = "bt.delay-needs-3-8";
+    /** A compact node that is neither a tree nor declared in TreeNodesModel. Data: the node's tag. */
+    public static final String UNDECLARED_NODE = "bt.undeclared-node";
+}
