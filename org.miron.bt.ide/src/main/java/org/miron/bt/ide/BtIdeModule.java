@@ -1,5 +1,7 @@
 package org.miron.bt.ide;
 
+import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.LexerIdeBindings;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
@@ -32,6 +34,10 @@ public class BtIdeModule extends AbstractBtIdeModule {
 
     public Class<? extends IEObjectDocumentationProvider> bindIEObjectDocumentationProvider() {
         return BtDocumentationProvider.class;
+    }
+
+    public Class<? extends ICodeActionService2> bindICodeActionService2() {
+        return IssueDataCodeActions.class;
     }
 
     public Class<? extends IHoverService> bindIHoverService() {

@@ -1,5 +1,7 @@
 package org.miron.dsl.ide;
 
+import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeCrossrefProposalProvider;
@@ -10,6 +12,10 @@ import org.miron.dsl.ide.hover.DslDocumentationProvider;
 
 /** The ide services RoQME and MIRoN share (their generated ide modules are unrelated classes). */
 public class DslIdeBindings extends AbstractGenericModule {
+
+    public Class<? extends ICodeActionService2> bindICodeActionService2() {
+        return IssueDataCodeActions.class;
+    }
 
     public Class<? extends IEObjectDocumentationProvider> bindIEObjectDocumentationProvider() {
         return DslDocumentationProvider.class;
