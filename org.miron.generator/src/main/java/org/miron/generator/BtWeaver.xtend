@@ -1,6 +1,5 @@
 package org.miron.generator
 
-import java.nio.file.Path
 import java.util.ArrayDeque
 import java.util.LinkedHashMap
 import java.util.LinkedHashSet
@@ -44,20 +43,23 @@ import org.miron.dsl.util.Imports
  *    every subtree call between the main tree and the subtree that reads them;
  *  - the main tree's root is wrapped once in the monitoring Parallel whose Repeat ticks one
  *    VariantAction per enum varpoint.
- * Trees of other files stay there and are reached through includes relative to the output
- * folder; only the files holding targets are copied into the woven tree.
+ * Trees of other files stay there and are reached through includes relative to the woven tree
+ * (computed on URIs); only the files holding targets are copied into the woven tree.
  */
 class BtWeaver {
 	/** BehaviorTree.CPP 3 registers Switch2..Switch6 only. */
 	public static val MAX_CASES = 6
 
 	val List<GenerationError> errors
-	val Path outputDir
+	/** Where the woven tree will be written: includes are relative to it. */
+	val URI wovenTree
 	val factory = BtFactory.eINSTANCE
+	/** Originals to their copies in the woven tree: variant calls point at the copies when there are. */
+	var EcoreUtil.Copier copier
 
-	new(List<GenerationError> errors, Path outputDir) {
+	new(List<GenerationError> errors, URI wovenTree) {
 		this.errors = errors
-		this.outputDir = outputDir.toAbsolutePath.normalize
+		this.wovenTree = wovenTree
 	}
 
 	/** The woven tree, or null when the model imports no behaviour tree. */
@@ -78,7 +80,7 @@ class BtWeaver {
 			targets.put(vp, selected)
 			selected.forEach[woven += eResource]
 		}
-		val copier = new EcoreUtil.Copier
+		copier = new EcoreUtil.Copier
 		val copies = woven.map[copier.copy(contents.head) as BTModel].toList
 		copier.copyReferences
 
@@ -291,7 +293,7 @@ class BtWeaver {
 	// ------------------------------------------------------------------ includes
 
 	/**
-	 * Includes of the woven tree, relative to the output folder: those of the copied files, then
+	 * Includes of the woven tree, relative to where it is written: those of the copied files, then
 	 * the files of variant trees not reachable through them; never a copied file, never twice.
 	 */
 	def private List<String> includes(Set<Resource> woven, List<SampledVarpoint> bound) {
@@ -317,12 +319,7 @@ class BtWeaver {
 				}
 			}
 		}
-		uris.map[relative(it)].toList
-	}
-
-	def private relative(URI uri) {
-		val file = Path.of(uri.toFileString).toAbsolutePath.normalize
-		outputDir.relativize(file).toString.replace('\\', '/')
+		uris.map[OutputLocation.relative(it, wovenTree)].toList
 	}
 
 	// ------------------------------------------------------------------ node factory
@@ -342,7 +339,7 @@ class BtWeaver {
 	def private subtree(BehaviorTree tree) {
 		val node = factory.createSubtreePlus
 		node.tag = "SubTreePlus"
-		node.behaviorTree = tree
+		node.behaviorTree = copier.get(tree) as BehaviorTree ?: tree
 		node
 	}
 

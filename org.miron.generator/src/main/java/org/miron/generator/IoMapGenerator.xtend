@@ -1,7 +1,12 @@
 package org.miron.generator
 
+import com.fasterxml.jackson.core.JsonGenerator
+import com.fasterxml.jackson.databind.JsonNode
+import com.fasterxml.jackson.databind.ObjectMapper
+import com.fasterxml.jackson.databind.node.JsonNodeFactory
+import com.fasterxml.jackson.databind.node.ObjectNode
+import java.math.BigDecimal
 import org.eclipse.emf.ecore.EObject
-import java.util.List
 import org.miron.bt.bt.Attribute
 import org.miron.dsl.miron.ArchBinding
 import org.miron.dsl.miron.BtBinding
@@ -13,87 +18,121 @@ import org.miron.dsl.roqme.Property
 import org.miron.dsl.util.Types
 
 /**
- * Writes name.io.json, the generator ⇄ engine contract of docs/io-json.md: every parameter the
- * engine feeds (metrics, contexts and their _known flags; per varpoint _input, _input_value and
- * _current) and every decision it reads, with the MIRoN element, type and binding of each.
+ * Writes name.io.json, the generator ⇄ engine contract of docs/io-json.md (its schema:
+ * docs/io-json.schema.json): every parameter the engine feeds (metrics, contexts and their _known
+ * flags; per varpoint _input, _input_value and _current) and every decision it reads, with the
+ * MIRoN element, type and binding of each. Built as a JSON tree and written by Jackson, the
+ * library the engine reads it with.
  */
 class IoMapGenerator {
+	static val json = JsonNodeFactory.instance
+	static val mapper = new ObjectMapper().enable(JsonGenerator.Feature.WRITE_BIGDECIMAL_AS_PLAIN)
 
-	def generate(AdaptationModel m) '''
-		{
-		  "format": 1,
-		  "model": «str(m.name)»,
-		  "mzn": «str(m.name + ".mzn")»,
-		  "dzn": «str(m.name + ".dzn")»,
-		  "tree": «if (m.tree === null) "null" else str(m.tree)»,
-		  "weights": «str(m.weights.id)»,
-		  "inputs": «list(inputs(m))»,
-		  "varpoints": «list(m.varpoints.map[vp|varpoint(vp).toString])»
-		}
-	'''
-
-	/** One entry per line, so that diffs of regenerated maps stay readable. */
-	def private list(List<String> entries) {
-		if (entries.empty) "[]" else "[\n  " + entries.join(",\n  ") + "\n]" // re-indented by the template
+	def String generate(AdaptationModel m) {
+		mapper.writer(new IoJsonPrinter).writeValueAsString(tree(m)) + "\n"
 	}
 
-	def private List<String> inputs(AdaptationModel m) {
-		(m.properties.map[metric.toString] + m.contexts.map[context.toString]).toList
+	def ObjectNode tree(AdaptationModel m) {
+		val root = json.objectNode
+		root.put("format", 1)
+		root.put("model", m.name)
+		root.put("mzn", m.name + ".mzn")
+		root.put("dzn", m.name + ".dzn")
+		root.put("tree", m.tree)
+		root.put("weights", m.weights.id)
+		val inputs = root.putArray("inputs")
+		m.properties.forEach[inputs.add(metric(it))]
+		m.contexts.forEach[inputs.add(context(it))]
+		val varpoints = root.putArray("varpoints")
+		m.varpoints.forEach[varpoints.add(varpoint(it))]
+		root
 	}
 
-	def private metric(Property p) '''{ "kind": "metric", "namespace": «str(Names.namespace(p))», "name": «str(p.name)», "param": «str(Names.metric(p))», "type": "float", "initial": «Numbers.json(p.reference ?: 0.5)» }'''
+	def private metric(Property p) {
+		val node = json.objectNode
+		node.put("kind", "metric")
+		node.put("namespace", Names.namespace(p))
+		node.put("name", p.name)
+		node.put("param", Names.metric(p))
+		node.put("type", "float")
+		node.put("initial", number(Numbers.clean(p.reference ?: 0.5)))
+		node
+	}
 
 	def private context(Context c) {
 		val type = Types.dataType(c as EObject)
-		val roqmeType = switch type {
+		val node = json.objectNode
+		node.put("kind", "context")
+		node.put("namespace", Names.namespace(c))
+		node.put("name", c.name)
+		node.put("roqmeType", switch type {
 			BooleanType: "boolean"
 			EventType: "event"
 			EnumType: "enum"
 			default: "number"
+		})
+		if (type instanceof EnumType) {
+			val literals = node.putArray("literals")
+			type.literals.forEach[literals.add(name)]
 		}
-		val literals = if (type instanceof EnumType) ''', "literals": [«type.literals.map[str(name)].join(", ")»]''' else ""
-		'''{ "kind": "context", "namespace": «str(Names.namespace(c))», "name": «str(c.name)», "roqmeType": «str(roqmeType)»«literals», "param": «str(Names.context(c))», "type": «str(ExpressionToMiniZinc.mznType(c))», "known": «str(Names.known(c))» }'''
+		node.put("param", Names.context(c))
+		node.put("type", ExpressionToMiniZinc.mznType(c))
+		node.put("known", Names.known(c))
+		node
 	}
 
 	def private varpoint(SampledVarpoint vp) {
-		val values = if (vp.isEnum) vp.labels.map[str(it)] else vp.values.map[Numbers.json(it)]
-		'''{ "name": «str(vp.name)», "kind": «str(if (vp.isEnum) "enum" else "number")», "values": [«values.join(", ")»], "preset": «if (vp.preset < 0) "null" else vp.preset», "decision": «str(vp.decision)», "input": «str(vp.input)», "inputValue": «str(vp.inputValue)», "current": «str(vp.current)», "binding": «binding(vp)» }'''
+		val node = json.objectNode
+		node.put("name", vp.name)
+		node.put("kind", if (vp.isEnum) "enum" else "number")
+		val values = node.putArray("values")
+		if (vp.isEnum) vp.labels.forEach[values.add(it)] else vp.values.forEach[values.add(number(it))]
+		if (vp.preset < 0) node.putNull("preset") else node.put("preset", vp.preset)
+		node.put("decision", vp.decision)
+		node.put("input", vp.input)
+		node.put("inputValue", vp.inputValue)
+		node.put("current", vp.current)
+		node.set("binding", binding(vp))
+		node
 	}
 
-	def private binding(SampledVarpoint vp) {
+	def private JsonNode binding(SampledVarpoint vp) {
 		val b = vp.varpoint.binding
+		val node = json.objectNode
 		switch b {
-			ArchBinding: '''{ "type": "arch", "parameterSetRepository": «str(b.parameterSetRepository)», "parameterSet": «str(b.parameterSet)», "component": «str(b.component)», "parameter": «str(b.parameter)» }'''
+			ArchBinding: {
+				node.put("type", "arch")
+				node.put("parameterSetRepository", b.parameterSetRepository)
+				node.put("parameterSet", b.parameterSet)
+				node.put("component", b.component)
+				node.put("parameter", b.parameter)
+			}
 			BtBinding: {
 				val selected = BindingTargets.select(vp, newArrayList)
-				val targets = selected.map[BindingTargets.nameOf(it)].toSet.map[str(it)].join(", ")
 				if (vp.isEnum) {
-					'''{ "type": "bt", "insertion": «str(b.insertionType.literal)», "targets": [«targets»], "variable": «str(vp.selection)» }'''
+					node.put("type", "bt")
+					node.put("insertion", b.insertionType.literal)
+					targets(node, selected)
+					node.put("variable", vp.selection)
 				} else {
-					val attribute = selected.filter(Attribute).head?.name
-					'''{ "type": "btport", "targets": [«targets»], "attribute": «str(attribute)», "variable": «str(vp.name)» }'''
+					node.put("type", "btport")
+					targets(node, selected)
+					node.put("attribute", selected.filter(Attribute).head?.name)
+					node.put("variable", vp.name)
 				}
 			}
-			default: "null"
+			default: return json.nullNode
 		}
+		node
 	}
 
-	/** A JSON string literal (null for null). */
-	def static String str(String s) {
-		if (s === null) {
-			return "null"
-		}
-		val out = new StringBuilder('"')
-		for (c : s.toCharArray) {
-			val code = c as int
-			if (code == 34 || code == 92) {
-				out.append('\\').append(c)
-			} else if (code < 32) {
-				out.append(String.format("\\u%04x", code))
-			} else {
-				out.append(c)
-			}
-		}
-		out.append('"').toString
+	def private targets(ObjectNode node, Iterable<EObject> selected) {
+		val targets = node.putArray("targets")
+		selected.map[BindingTargets.nameOf(it)].toSet.forEach[targets.add(it)]
+	}
+
+	/** 10, 0.25, -3: no exponent, no trailing zeros (as Numbers.json). */
+	def private static number(BigDecimal value) {
+		if (value.signum == 0) BigDecimal.ZERO else value.stripTrailingZeros
 	}
 }

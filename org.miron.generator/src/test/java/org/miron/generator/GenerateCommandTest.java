@@ -18,7 +18,7 @@ import org.junit.rules.TemporaryFolder;
 
 /**
  * `miron generate` as a user runs it: every example generates, its woven tree passes our BT
- * validation and its MiniZinc model solves; output is deterministic and relative; a model with
+ * validation, its io.json follows docs/io-json.schema.json and its MiniZinc model solves; output is deterministic and relative; a model with
  * errors prints them all (file:line:col) and writes nothing; bad command lines exit 2.
  */
 public class GenerateCommandTest {
@@ -49,6 +49,7 @@ public class GenerateCommandTest {
             }
             Cli check = new Cli();
             assertEquals(model + ": " + check.out(), 0, check.run("check", out.resolve(base(model) + ".ext.xml").toString()));
+            IoJsonSchema.assertValid(out.resolve(base(model) + ".io.json"));
             MiniZinc mzn = new MiniZinc(out.resolve(base(model) + ".io.json"));
             Map<String, Integer> decisions = mzn.solve(mzn.defaults());
             assertEquals(model + ": one decision per varpoint", mzn.io.get("varpoints").size(), decisions.size());

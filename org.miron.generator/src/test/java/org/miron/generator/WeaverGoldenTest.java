@@ -18,7 +18,7 @@ import org.junit.runners.Parameterized.Parameters;
 /**
  * Golden files of the weaver, one per insertion case (src/test/resources/weaving): each
  * expected tree was written by hand from docs/generators.md, and every woven tree must pass
- * `miron check`.
+ * `miron check`; every io.json must follow docs/io-json.schema.json.
  */
 @RunWith(Parameterized.class)
 public class WeaverGoldenTest {
@@ -74,6 +74,13 @@ public class WeaverGoldenTest {
         assertEquals(cli.out() + cli.err, 0, exit);
         String expected = Files.readString(models.resolve("expected/" + name + ".ext.xml"));
         assertEquals(expected, Files.readString(out.resolve(name + ".ext.xml")));
+    }
+
+    @Test
+    public void ioJsonFollowsTheSchema() throws IOException {
+        Cli cli = new Cli();
+        assertEquals(cli.out() + cli.err, 0, cli.run("generate", models.resolve(name + ".miron").toString(), "-o", out.toString()));
+        IoJsonSchema.assertValid(out.resolve(name + ".io.json"));
     }
 
     @Test

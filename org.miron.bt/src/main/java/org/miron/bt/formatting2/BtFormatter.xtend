@@ -19,6 +19,9 @@ import org.miron.bt.bt.TreeNodesModel
  * Tidy XML: one element per line, children indented one level, attributes one space apart with
  * no space around '=', at most one blank line kept between elements. Comments and the opaque
  * TreeNodesModel are kept as written.
+ * A model with no text of its own (serialized from memory, as the woven tree; see BtFormatting)
+ * gets a blank line before each tree, the TreeNodesModel and </root>: the formatter uses a default
+ * line count only where the text has no whitespace yet, so parsed files keep their own.
  */
 class BtFormatter extends AbstractFormatter2 {
 
@@ -42,7 +45,7 @@ class BtFormatter extends AbstractFormatter2 {
 	}
 
 	def dispatch void format(TreeNodesModel nodesModel, extension IFormattableDocument document) {
-		nodesModel.prepend[setNewLines(1, 1, 2)]
+		nodesModel.prepend[setNewLines(1, 2, 2)]
 	}
 
 	def dispatch void format(Attribute attribute, extension IFormattableDocument document) {
@@ -80,7 +83,8 @@ class BtFormatter extends AbstractFormatter2 {
 	def private void formatElement(EObject element, extension IFormattableDocument document) {
 		val regions = element.regionFor
 		if (element.eContainer !== null) {
-			regions.keyword("<").prepend[setNewLines(1, 1, 2)]
+			val blankLine = if (element instanceof BehaviorTree) 2 else 1
+			regions.keyword("<").prepend[setNewLines(1, blankLine, 2)]
 		}
 		regions.keyword("<").append[noSpace]
 		// Attributes the grammar spells out (ID of trees and subtrees, path of includes).
@@ -98,7 +102,8 @@ class BtFormatter extends AbstractFormatter2 {
 		}
 		if (close !== null) {
 			interior(ends.head, close)[indent]
-			close.prepend[newLine]
+			val blankLine = element instanceof BTModel && close.previousHiddenRegion.undefined
+			close.prepend[setNewLines(if (blankLine) 2 else 1)]
 			close.append[noSpace]
 			ends.get(ends.size - 1).prepend[noSpace]
 		}

@@ -4,10 +4,23 @@ import static org.junit.Assert.assertEquals;
 
 import java.io.File;
 
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.xtext.resource.XtextResourceSet;
 import org.junit.Test;
+import org.miron.bt.bt.AlwaysSuccess;
+import org.miron.bt.bt.Attribute;
+import org.miron.bt.bt.BTModel;
+import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.bt.BtFactory;
+import org.miron.bt.bt.Import;
+import org.miron.bt.bt.Sequence;
+import org.miron.bt.bt.SubtreePlus;
 import org.miron.bt.formatting2.BtFormatting;
 
-/** The formatter indents by element depth and keeps comments, quotes and TreeNodesModel. */
+/**
+ * The formatter indents by element depth and keeps comments, quotes and TreeNodesModel; parsed files
+ * keep their blank lines, models without text get one between trees.
+ */
 public class FormatterTest {
 
     @Test
@@ -40,5 +53,59 @@ public class FormatterTest {
                 + "</TreeNodesModel>\n"
                 + "</root>\n";
         assertEquals(tidy, BtFormatting.format(BtFiles.parse(messy, new File(BtFiles.RESOURCES, "valid/messy.bt"))));
+    }
+
+    /** A model built in memory (the woven tree) is serialized, then formatted with blank lines between trees. */
+    @Test
+    public void aModelWithoutTextIsPrintedTidy() throws Exception {
+        BtFactory f = BtFactory.eINSTANCE;
+        BTModel model = f.createBTModel();
+        model.getAttributes().add(attribute("main_tree_to_execute", "Main"));
+        Import include = f.createImport();
+        include.setImportURI("inc/localization.bt");
+        model.getImports().add(include);
+        BehaviorTree sub = f.createBehaviorTree();
+        sub.setName("Sub");
+        AlwaysSuccess ok = f.createAlwaysSuccess();
+        ok.setTag("AlwaysSuccess");
+        sub.getNodes().add(ok);
+        SubtreePlus call = f.createSubtreePlus();
+        call.setTag("SubTreePlus");
+        call.setBehaviorTree(sub);
+        call.getAttributes().add(attribute("goal", "{a & b}"));
+        Sequence sequence = f.createSequence();
+        sequence.setTag("Sequence");
+        sequence.getAttributes().add(attribute("name", "top"));
+        sequence.getNodes().add(call);
+        BehaviorTree main = f.createBehaviorTree();
+        main.setName("Main");
+        main.getNodes().add(sequence);
+        model.getTrees().add(main);
+        model.getTrees().add(sub);
+        XtextResourceSet set = BtFiles.INJECTOR.getInstance(XtextResourceSet.class);
+        set.createResource(URI.createFileURI(new File(BtFiles.RESOURCES, "valid/printed.bt").getAbsolutePath()))
+                .getContents().add(model);
+
+        assertEquals("<root main_tree_to_execute=\"Main\">\n"
+                + "  <include path=\"inc/localization.bt\"/>\n"
+                + "\n"
+                + "  <BehaviorTree ID=\"Main\">\n"
+                + "    <Sequence name=\"top\">\n"
+                + "      <SubTreePlus ID=\"Sub\" goal=\"{a &amp; b}\"/>\n"
+                + "    </Sequence>\n"
+                + "  </BehaviorTree>\n"
+                + "\n"
+                + "  <BehaviorTree ID=\"Sub\">\n"
+                + "    <AlwaysSuccess/>\n"
+                + "  </BehaviorTree>\n"
+                + "\n"
+                + "</root>\n", BtFormatting.print(model));
+    }
+
+    private static Attribute attribute(String name, String value) {
+        Attribute a = BtFactory.eINSTANCE.createAttribute();
+        a.setName(name);
+        a.setValue(value);
+        return a;
     }
 }

@@ -1,20 +1,26 @@
 package org.miron.generator.cli;
 
 import java.io.File;
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Callable;
 
 import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.generator.IFileSystemAccess;
+import org.eclipse.xtext.generator.JavaIoFileSystemAccess;
+import org.eclipse.xtext.generator.OutputConfiguration;
+import org.eclipse.xtext.resource.impl.ResourceServiceProviderRegistryImpl;
+import org.eclipse.xtext.util.RuntimeIOException;
 import org.miron.dsl.miron.MironModel;
 import org.miron.generator.GenerationError;
 import org.miron.generator.MironGenerator;
+import org.miron.generator.StagedGeneration;
 import org.miron.generator.WeightPolicy;
 
 import picocli.CommandLine.Command;
@@ -26,8 +32,9 @@ import picocli.CommandLine.Spec;
 
 /**
  * `miron generate FILE.miron... [-o DIR] [--weights need|metric]`: validates the models and
- * everything they import, then writes name.ext.xml, name.mzn, name.dzn and name.io.json per model.
- * Any error (validation or generation) is printed and nothing at all is written.
+ * everything they import, then writes name.ext.xml, name.mzn, name.dzn and name.io.json per model
+ * with {@link MironGenerator} through a file-system access on DIR. Any error (validation or
+ * generation, of any model) is printed and nothing at all is written.
  */
 @Command(name = "generate", mixinStandardHelpOptions = true,
         description = "Generates the woven behaviour tree (name.ext.xml), the MiniZinc model (name.mzn, name.dzn) "
@@ -50,6 +57,19 @@ public class GenerateCommand implements Callable<Integer> {
 
     @Spec
     CommandSpec spec;
+
+    /** Files under dir, created when missing, overwritten, in UTF-8 whatever the platform's default. */
+    private static JavaIoFileSystemAccess fileSystemAccess(Path dir) {
+        OutputConfiguration config = new OutputConfiguration(IFileSystemAccess.DEFAULT_OUTPUT);
+        config.setOutputDirectory(dir.toAbsolutePath().normalize().toString());
+        config.setCreateOutputDirectory(true);
+        config.setOverrideExistingResources(true);
+        JavaIoFileSystemAccess fsa = new JavaIoFileSystemAccess(new ResourceServiceProviderRegistryImpl(),
+                uri -> StandardCharsets.UTF_8.name());
+        fsa.setOutputConfigurations(Map.of(IFileSystemAccess.DEFAULT_OUTPUT, config));
+        fsa.setWriteTrace(false);
+        return fsa;
+    }
 
     @Override
     public Integer call() {
@@ -82,44 +102,50 @@ public class GenerateCommand implements Callable<Integer> {
         }
 
         Path dir = output.toPath();
-        Map<Path, String> outputs = new LinkedHashMap<>();
+        JavaIoFileSystemAccess target = fileSystemAccess(dir);
+        MironGenerator generator = new MironGenerator();
+        generator.setWeights(policy);
+        List<StagedGeneration> generated = new ArrayList<>();
+        Set<String> names = new HashSet<>();
         List<Diagnostic> errors = new ArrayList<>();
         for (Resource resource : resources) {
             if (resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof MironModel)) {
                 continue;
             }
-            MironGenerator.Result result;
+            StagedGeneration result;
             try {
-                result = new MironGenerator(policy, dir).generate((MironModel) resource.getContents().get(0));
+                result = generator.stage(resource, target);
             } catch (RuntimeException e) {
                 // A generator bug must still end in a clear message, never a stack trace.
                 errors.add(new Diagnostic(loader.displayPath(resource.getURI()), 0, 0, Diagnostic.Severity.ERROR,
                         "internal error of the generator, please report it: " + e));
                 continue;
             }
-            for (GenerationError e : result.errors) {
+            for (GenerationError e : result.errors()) {
                 errors.add(loader.error(e.source(), e.message()));
             }
-            for (Map.Entry<String, String> file : result.files.entrySet()) {
-                if (outputs.put(dir.resolve(file.getKey()), file.getValue()) != null) {
+            for (String name : result.files().names()) {
+                if (!names.add(name)) {
                     errors.add(new Diagnostic(loader.displayPath(resource.getURI()), 0, 0, Diagnostic.Severity.ERROR,
-                            "another model also generates " + file.getKey() + ": generate them into different folders"));
+                            "another model also generates " + name + ": generate them into different folders"));
                 }
             }
+            generated.add(result);
         }
         if (!errors.isEmpty()) {
             errors.stream().distinct().sorted().forEach(out::println);
             out.flush();
             return 1;
         }
+        // Every model generated: only now is anything written.
         try {
-            java.nio.file.Files.createDirectories(dir);
-            for (Map.Entry<Path, String> file : outputs.entrySet()) {
-                java.nio.file.Files.writeString(file.getKey(), file.getValue(), StandardCharsets.UTF_8);
-                out.println("wrote " + file.getKey());
+            for (StagedGeneration result : generated) {
+                result.files().flushTo(target);
+                result.files().names().forEach(name -> out.println("wrote " + dir.resolve(name)));
             }
-        } catch (IOException e) {
-            err.println(dir + ": error: cannot write: " + e.getMessage());
+        } catch (RuntimeIOException e) {
+            Throwable cause = e.getCause() == null ? e : e.getCause();
+            err.println(dir + ": error: cannot write: " + cause.getMessage());
             err.flush();
             return 1;
         }

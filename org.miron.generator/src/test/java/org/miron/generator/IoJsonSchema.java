@@ -1,0 +1,55 @@
+package org.miron.generator;
+
+import static org.junit.Assert.assertTrue;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.networknt.schema.Schema;
+import com.networknt.schema.SchemaRegistry;
+import com.networknt.schema.SpecificationVersion;
+
+/** docs/io-json.schema.json, the io.json contract, as a validator for tests. */
+final class IoJsonSchema {
+    static final Path FILE = Cli.ROOT.resolve("docs/io-json.schema.json");
+    private static final ObjectMapper MAPPER = new ObjectMapper();
+    private static Schema schema;
+
+    private IoJsonSchema() {
+    }
+
+    private static synchronized Schema schema() {
+        if (schema == null) {
+            try (InputStream in = Files.newInputStream(FILE)) {
+                schema = SchemaRegistry.withDefaultDialect(SpecificationVersion.DRAFT_2020_12).getSchema(in);
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        }
+        return schema;
+    }
+
+    /** What the schema finds wrong with json (empty when it is valid). */
+    static List<String> problems(JsonNode json) {
+        return schema().validate(json).stream().map(Object::toString).toList();
+    }
+
+    static List<String> problems(String json) {
+        try {
+            return problems(MAPPER.readTree(json));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    static void assertValid(Path ioJson) throws IOException {
+        List<String> problems = problems(Files.readString(ioJson));
+        assertTrue(ioJson + " breaks " + FILE.getFileName() + ": " + problems, problems.isEmpty());
+    }
+}
