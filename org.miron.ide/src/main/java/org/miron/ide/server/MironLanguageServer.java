@@ -47,15 +47,25 @@ public final class MironLanguageServer {
 
     /** Accepts clients on 127.0.0.1:port until the process is stopped. */
     public static void serveSocket(int port) throws IOException {
-        try (ServerSocket socket = new ServerSocket(port, 50, InetAddress.getLoopbackAddress())) {
+        try (ServerSocket socket = bindLoopback(port)) {
             System.err.println("miron lsp: listening on " + socket.getInetAddress().getHostAddress() + ":"
                     + socket.getLocalPort());
-            while (true) {
-                Socket client = socket.accept();
-                Thread thread = new Thread(() -> serveClient(client), "miron-lsp-" + client.getPort());
-                thread.setDaemon(true);
-                thread.start();
-            }
+            acceptClients(socket);
+        }
+    }
+
+    /** A server socket on the loopback interface only: the server reads and writes the user's files. */
+    public static ServerSocket bindLoopback(int port) throws IOException {
+        return new ServerSocket(port, 50, InetAddress.getLoopbackAddress());
+    }
+
+    /** Serves each client that connects, each with its own server, until the socket closes. */
+    public static void acceptClients(ServerSocket socket) throws IOException {
+        while (!socket.isClosed()) {
+            Socket client = socket.accept();
+            Thread thread = new Thread(() -> serveClient(client), "miron-lsp-" + client.getPort());
+            thread.setDaemon(true);
+            thread.start();
         }
     }
 

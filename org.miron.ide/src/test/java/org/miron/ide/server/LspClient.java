@@ -1,6 +1,8 @@
 package org.miron.ide.server;
 
 import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
 import java.io.PipedInputStream;
 import java.io.PipedOutputStream;
 import java.nio.file.Files;
@@ -17,6 +19,7 @@ import org.eclipse.lsp4j.Diagnostic;
 import org.eclipse.lsp4j.DidChangeTextDocumentParams;
 import org.eclipse.lsp4j.DidOpenTextDocumentParams;
 import org.eclipse.lsp4j.InitializeParams;
+import org.eclipse.lsp4j.InitializeResult;
 import org.eclipse.lsp4j.InitializedParams;
 import org.eclipse.lsp4j.MessageActionItem;
 import org.eclipse.lsp4j.MessageParams;
@@ -43,17 +46,32 @@ public final class LspClient implements LanguageClient, AutoCloseable {
     private final Map<String, List<Diagnostic>> diagnostics = new ConcurrentHashMap<>();
     private final Map<String, Integer> versions = new ConcurrentHashMap<>();
     private final LanguageServer server;
-    private final PipedOutputStream toServer;
+    private final OutputStream toServer;
 
+    /** A server in this JVM, on piped streams. */
     public LspClient() throws IOException {
+        this(inProcessServer());
+    }
+
+    /** A server at the other end of the streams, e.g. a child process. */
+    public LspClient(InputStream fromServer, OutputStream toServer) {
+        this.toServer = toServer;
+        Launcher<LanguageServer> launcher = LSPLauncher.createClientLauncher(this, fromServer, toServer);
+        launcher.startListening();
+        server = launcher.getRemoteProxy();
+    }
+
+    private LspClient(Object[] streams) {
+        this((InputStream) streams[0], (OutputStream) streams[1]);
+    }
+
+    private static Object[] inProcessServer() throws IOException {
         PipedInputStream serverIn = new PipedInputStream(1 << 16);
-        toServer = new PipedOutputStream(serverIn);
+        PipedOutputStream toServer = new PipedOutputStream(serverIn);
         PipedInputStream clientIn = new PipedInputStream(1 << 16);
         PipedOutputStream serverOut = new PipedOutputStream(clientIn);
         MironLanguageServer.serve(serverIn, serverOut, false);
-        Launcher<LanguageServer> launcher = LSPLauncher.createClientLauncher(this, clientIn, toServer);
-        launcher.startListening();
-        server = launcher.getRemoteProxy();
+        return new Object[] { clientIn, toServer };
     }
 
     /** A diagnostic's message as plain text. */
@@ -67,7 +85,7 @@ public final class LspClient implements LanguageClient, AutoCloseable {
     }
 
     /** initialize + initialized with one workspace folder. */
-    public void initialize(Path workspace) throws Exception {
+    public InitializeResult initialize(Path workspace) throws Exception {
         InitializeParams params = new InitializeParams();
         WorkspaceClientCapabilities workspaceCapabilities = new WorkspaceClientCapabilities();
         workspaceCapabilities.setWorkspaceFolders(true);
@@ -75,8 +93,9 @@ public final class LspClient implements LanguageClient, AutoCloseable {
         capabilities.setWorkspace(workspaceCapabilities);
         params.setCapabilities(capabilities);
         params.setWorkspaceFolders(List.of(new WorkspaceFolder(uri(workspace), "workspace")));
-        server.initialize(params).get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
+        InitializeResult result = server.initialize(params).get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
         server.initialized(new InitializedParams());
+        return result;
     }
 
     /** initialize + initialized as a client that opens single files, without any folder. */
