@@ -24,9 +24,8 @@ public class HospitalDecisionTest {
     @BeforeClass
     public static void generate() throws IOException {
         Path out = temp.newFolder("out").toPath();
-        Cli cli = new Cli();
-        assertEquals(cli.out(), 0, cli.run("generate",
-                Cli.ROOT.resolve("examples/hospital-delivery/hospital.miron").toString(), "-o", out.toString()));
+        Toolchain toolchain = new Toolchain();
+        assertEquals(toolchain.messages(), 0, toolchain.generate(Toolchain.ROOT.resolve("examples/hospital-delivery/hospital.miron").toString(), out.toString()));
         mzn = new MiniZinc(out.resolve("hospital.io.json"));
     }
 

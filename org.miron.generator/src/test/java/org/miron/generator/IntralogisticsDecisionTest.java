@@ -35,10 +35,10 @@ public class IntralogisticsDecisionTest {
 
     private static MiniZinc generate(String weights) throws IOException {
         Path out = temp.newFolder(weights).toPath();
-        Cli cli = new Cli();
-        int exit = cli.run("generate", Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(),
-                "-o", out.toString(), "--weights", weights);
-        assertEquals(cli.out() + cli.err, 0, exit);
+        Toolchain toolchain = new Toolchain();
+        int exit = toolchain.generate(Toolchain.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(),
+                out.toString(), WeightPolicy.of(weights));
+        assertEquals(toolchain.messages(), 0, exit);
         return new MiniZinc(out.resolve("intralogistics.io.json"));
     }
 

@@ -31,8 +31,7 @@ public class IoJsonContractTest {
 
     private ObjectNode generateIntralogistics() throws IOException {
         Path out = temp.newFolder("out").toPath();
-        assertEquals(0, Cli.exit("generate", Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(),
-                "-o", out.toString()));
+        assertEquals(0, new Toolchain().generate(Toolchain.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(), out.toString()));
         return (ObjectNode) MAPPER.readTree(out.resolve("intralogistics.io.json").toFile());
     }
 
@@ -47,7 +46,7 @@ public class IoJsonContractTest {
 
     @Test
     public void exampleOfTheDocumentationIsValid() throws IOException {
-        String doc = Files.readString(Cli.ROOT.resolve("docs/io-json.md"));
+        String doc = Files.readString(Toolchain.ROOT.resolve("docs/io-json.md"));
         int start = doc.indexOf("```json\n") + "```json\n".length();
         assertTrue("docs/io-json.md has a ```json example", start > "```json\n".length() - 1);
         String example = doc.substring(start, doc.indexOf("```", start));
@@ -57,8 +56,7 @@ public class IoJsonContractTest {
     @Test
     public void layoutKeepsValuesOnOneLineAndObjectsApart() throws IOException {
         Path out = temp.newFolder("layout").toPath();
-        assertEquals(0, Cli.exit("generate", Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(),
-                "-o", out.toString()));
+        assertEquals(0, new Toolchain().generate(Toolchain.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString(), out.toString()));
         String text = Files.readString(out.resolve("intralogistics.io.json"));
         assertTrue(text, text.startsWith("{\n  \"format\": 1,\n  \"model\": \"intralogistics\",\n"));
         assertTrue(text, text.contains("\n      \"values\": [\"pick\", \"deliver\", \"dock\", \"pickDeliverCharge\"],\n"));
@@ -90,7 +88,7 @@ public class IoJsonContractTest {
     @Test
     public void stringsAreEscapedByTheJsonLibrary() throws IOException {
         for (String f : List.of("intralogistics.bt", "intralogistics.roqme")) {
-            Files.copy(Cli.ROOT.resolve("examples/intralogistics/" + f), temp.getRoot().toPath().resolve(f));
+            Files.copy(Toolchain.ROOT.resolve("examples/intralogistics/" + f), temp.getRoot().toPath().resolve(f));
         }
         String odd = "Cd\\\"Parameter\\\" – \\\\ x";  // in MIRoN source: Cd\"Parameter\" – \\ x
         Path model = temp.getRoot().toPath().resolve("odd.miron");
@@ -98,8 +96,8 @@ public class IoJsonContractTest {
                 + "@varpoint speed : number (1:1:2)\n\nin arch {\n  parameterSetRepository \"R\"\n  parameterSet \"" + odd
                 + "\"\n  component \"C\"\n  parameter \"p\"\n}\n");
         Path out = temp.newFolder("odd").toPath();
-        Cli cli = new Cli();
-        assertEquals(cli.out() + cli.err, 0, cli.run("generate", model.toString(), "-o", out.toString()));
+        Toolchain toolchain = new Toolchain();
+        assertEquals(toolchain.messages(), 0, toolchain.generate(model.toString(), out.toString()));
         JsonNode io = MAPPER.readTree(out.resolve("odd.io.json").toFile());
         assertEquals(List.of(), IoJsonSchema.problems(io));
         assertEquals("Cd\"Parameter\" – \\ x", io.get("varpoints").get(0).get("binding").get("parameterSet").asText());

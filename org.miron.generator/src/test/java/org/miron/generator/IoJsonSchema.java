@@ -17,7 +17,7 @@ import com.networknt.schema.SpecificationVersion;
 
 /** docs/io-json.schema.json, the io.json contract, as a validator for tests. */
 final class IoJsonSchema {
-    static final Path FILE = Cli.ROOT.resolve("docs/io-json.schema.json");
+    static final Path FILE = Toolchain.ROOT.resolve("docs/io-json.schema.json");
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private static Schema schema;
 

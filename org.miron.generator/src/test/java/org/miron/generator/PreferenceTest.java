@@ -25,14 +25,14 @@ public class PreferenceTest {
 
     @BeforeClass
     public static void generate() throws IOException {
-        Path models = Cli.copyResources("weaving", temp.newFolder("models").toPath());
+        Path models = Toolchain.copyResources("weaving", temp.newFolder("models").toPath());
         Files.writeString(models.resolve("sampled.miron"), "import \"nominal.bt\" as bt\n\n"
                 + "property safety\nproperty speed\n\n"
                 + "@varpoint v : number (0:1:10) { 2 affects safety+++, 6 affects { safety---, speed++ } }\n");
         out = temp.newFolder("out").toPath();
         for (String model : new String[] { "in_middle", "port", "sampled", "split" }) {
-            Cli cli = new Cli();
-            assertEquals(cli.out(), 0, cli.run("generate", models.resolve(model + ".miron").toString(), "-o", out.toString()));
+            Toolchain toolchain = new Toolchain();
+            assertEquals(toolchain.messages(), 0, toolchain.generate(models.resolve(model + ".miron").toString(), out.toString()));
         }
     }
 

@@ -63,32 +63,32 @@ public class WeaverGoldenTest {
 
     @BeforeClass
     public static void copyModels() throws IOException {
-        models = Cli.copyResources("weaving", temp.newFolder("models").toPath());
+        models = Toolchain.copyResources("weaving", temp.newFolder("models").toPath());
         out = temp.getRoot().toPath().resolve("out");
     }
 
     @Test
     public void wovenTreeIsTheExpectedOne() throws IOException {
-        Cli cli = new Cli();
-        int exit = cli.run("generate", models.resolve(name + ".miron").toString(), "-o", out.toString());
-        assertEquals(cli.out() + cli.err, 0, exit);
+        Toolchain toolchain = new Toolchain();
+        int exit = toolchain.generate(models.resolve(name + ".miron").toString(), out.toString());
+        assertEquals(toolchain.messages(), 0, exit);
         String expected = Files.readString(models.resolve("expected/" + name + ".ext.xml"));
         assertEquals(expected, Files.readString(out.resolve(name + ".ext.xml")));
     }
 
     @Test
     public void ioJsonFollowsTheSchema() throws IOException {
-        Cli cli = new Cli();
-        assertEquals(cli.out() + cli.err, 0, cli.run("generate", models.resolve(name + ".miron").toString(), "-o", out.toString()));
+        Toolchain toolchain = new Toolchain();
+        assertEquals(toolchain.messages(), 0, toolchain.generate(models.resolve(name + ".miron").toString(), out.toString()));
         IoJsonSchema.assertValid(out.resolve(name + ".io.json"));
     }
 
     @Test
     public void wovenTreePassesOurBtValidation() {
-        Cli generate = new Cli();
-        assertEquals(0, generate.run("generate", models.resolve(name + ".miron").toString(), "-o", out.toString()));
-        Cli check = new Cli();
-        int exit = check.run("check", out.resolve(name + ".ext.xml").toString());
-        assertEquals(check.out(), 0, exit);
+        Toolchain generate = new Toolchain();
+        assertEquals(0, generate.generate(models.resolve(name + ".miron").toString(), out.toString()));
+        Toolchain check = new Toolchain();
+        int exit = check.check(out.resolve(name + ".ext.xml").toString());
+        assertEquals(check.messages(), 0, exit);
     }
 }

@@ -13,7 +13,7 @@ import java.util.Map;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.generator.cli.MironCli;
+import org.miron.cli.MironCli;
 import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.MiniZincBackend;

@@ -15,7 +15,7 @@ import org.junit.Before;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.generator.cli.MironCli;
+import org.miron.cli.MironCli;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
 import org.miron.runtime.broker.Broker;

@@ -1,22 +1,18 @@
 package org.miron.ide.server;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 
 import org.eclipse.emf.ecore.resource.Resource;
-import org.eclipse.xtext.generator.IFileSystemAccess;
 import org.eclipse.xtext.generator.JavaIoFileSystemAccess;
-import org.eclipse.xtext.generator.OutputConfiguration;
 import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
-import org.eclipse.xtext.resource.impl.ResourceServiceProviderRegistryImpl;
 import org.eclipse.xtext.util.RuntimeIOException;
 import org.miron.generator.GenerationError;
 import org.miron.generator.MironGenerator;
 import org.miron.generator.StagedGeneration;
+import org.miron.generator.standalone.BatchGeneration;
 
 /** Runs the MIRoN generator on a resource into a folder: all files, or none when there is an error. */
 final class ModelGeneration {
@@ -28,7 +24,7 @@ final class ModelGeneration {
     }
 
     static Result run(Resource resource, Path folder) {
-        JavaIoFileSystemAccess target = fileSystemAccess(folder);
+        JavaIoFileSystemAccess target = BatchGeneration.folder(folder);
         StagedGeneration staged;
         try {
             staged = new MironGenerator().stage(resource, target);
@@ -61,16 +57,4 @@ final class ModelGeneration {
         return error.source().eResource().getURI().lastSegment() + ":" + node.getStartLine() + ": ";
     }
 
-    /** Files under the folder, created when missing, overwritten, in UTF-8. */
-    private static JavaIoFileSystemAccess fileSystemAccess(Path folder) {
-        OutputConfiguration config = new OutputConfiguration(IFileSystemAccess.DEFAULT_OUTPUT);
-        config.setOutputDirectory(folder.toAbsolutePath().normalize().toString());
-        config.setCreateOutputDirectory(true);
-        config.setOverrideExistingResources(true);
-        JavaIoFileSystemAccess fsa = new JavaIoFileSystemAccess(new ResourceServiceProviderRegistryImpl(),
-                uri -> StandardCharsets.UTF_8.name());
-        fsa.setOutputConfigurations(Map.of(IFileSystemAccess.DEFAULT_OUTPUT, config));
-        fsa.setWriteTrace(false);
-        return fsa;
-    }
 }

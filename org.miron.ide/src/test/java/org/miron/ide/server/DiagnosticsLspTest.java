@@ -19,7 +19,7 @@ import org.eclipse.lsp4j.FileEvent;
 import org.junit.After;
 import org.junit.Before;
 import org.junit.Test;
-import org.miron.generator.cli.ModelLoader;
+import org.miron.generator.standalone.ModelLoader;
 
 /** The server's diagnostics are `miron check`'s, and follow the files on disk. */
 public class DiagnosticsLspTest {
@@ -51,7 +51,7 @@ public class DiagnosticsLspTest {
 
         ModelLoader check = new ModelLoader();
         check.load(miron.toFile());
-        List<org.miron.generator.cli.Diagnostic> expected = check.validateAll();
+        List<org.miron.generator.standalone.Diagnostic> expected = check.validateAll();
         assertFalse(expected.isEmpty());
 
         for (Path file : List.of(miron, bt)) {

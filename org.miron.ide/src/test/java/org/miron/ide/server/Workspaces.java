@@ -7,15 +7,15 @@ import java.nio.file.Path;
 import java.util.stream.Stream;
 
 /** Temporary copies of the repository's examples, so tests can edit and delete files. */
-final class Workspaces {
+public final class Workspaces {
     private Workspaces() {
     }
 
-    static Path root() {
+    public static Path root() {
         return Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
     }
 
-    static Path copyOfExample(String name) throws IOException {
+    public static Path copyOfExample(String name) throws IOException {
         Path source = root().resolve("examples").resolve(name);
         Path target = Files.createTempDirectory("miron-lsp-" + name);
         try (Stream<Path> files = Files.walk(source)) {
@@ -35,7 +35,7 @@ final class Workspaces {
         return target;
     }
 
-    static void delete(Path dir) throws IOException {
+    public static void delete(Path dir) throws IOException {
         try (Stream<Path> files = Files.walk(dir)) {
             files.sorted((a, b) -> b.getNameCount() - a.getNameCount()).forEach(file -> file.toFile().delete());
         }

@@ -1,0 +1,82 @@
+package org.miron.cli;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.ZoneId;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.executor.BtBuildException;
+import org.miron.runtime.executor.ConsoleTracePrinter;
+import org.miron.runtime.executor.NodeStatus;
+import org.miron.runtime.live.LiveExecutor;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code miron execute TREE}: runs a (woven) behaviour tree against the bus and the skill interface. */
+@Command(name = "execute", mixinStandardHelpOptions = true,
+        description = "Run a behaviour tree (.bt or woven .ext.xml): VariantAction nodes follow the engine's "
+                + "decisions, other actions are pushed as skills to the skill interface; prints a trace.",
+        exitCodeListHeading = "Exit codes:%n",
+        exitCodeList = { "0:the tree succeeded", "1:the tree failed", "2:the tree cannot be loaded",
+                "3:stopped (SIGTERM/Ctrl-C) while running" })
+public final class ExecuteCommand implements Callable<Integer> {
+    @Parameters(paramLabel = "TREE", description = "the tree file")
+    Path treeFile;
+
+    @Option(names = "--period", paramLabel = "MS", description = "tick period in ms (default: ${DEFAULT-VALUE})")
+    long periodMs = 100;
+
+    @Option(names = "--show-resets", description = "also trace the reset of finished nodes to IDLE")
+    boolean showResets;
+
+    @Mixin
+    BrokerEndpoints.Request request = new BrokerEndpoints.Request();
+
+    @Option(names = "--skill-events", description = "skill interface PUB with skill results (default: ${DEFAULT-VALUE})")
+    String skillEvents = Endpoints.DEFAULT_SKILL_EVENTS;
+
+    @Mixin
+    BrokerEndpoints.BusIn busIn = new BrokerEndpoints.BusIn();
+
+    @Mixin
+    BrokerEndpoints.BusOut busOut = new BrokerEndpoints.BusOut();
+
+    @Override
+    public Integer call() {
+        if (!Files.isRegularFile(treeFile)) {
+            System.err.println(treeFile + ": error: no such file");
+            return 2;
+        }
+        Endpoints endpoints = new Endpoints(request.endpoint, Endpoints.DEFAULT_SKILL, skillEvents, busIn.endpoint, busOut.endpoint);
+        try (LiveExecutor executor = new LiveExecutor(endpoints)) {
+            try {
+                executor.build(treeFile, new ConsoleTracePrinter(System.out, ZoneId.systemDefault(), showResets));
+            } catch (BtBuildException e) {
+                System.err.println("miron execute: error: " + e.getMessage());
+                return 2;
+            }
+            CountDownLatch finished = new CountDownLatch(1);
+            Thread hook = new Thread(() -> {
+                executor.stop();
+                try {
+                    finished.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, "miron-execute-shutdown");
+            Runtime.getRuntime().addShutdownHook(hook);
+            NodeStatus status;
+            try {
+                status = executor.run(Duration.ofMillis(periodMs));
+            } finally {
+                finished.countDown();
+            }
+            System.out.println("tree " + executor.tree().id() + " finished: " + status);
+            return status == NodeStatus.SUCCESS ? 0 : status == NodeStatus.FAILURE ? 1 : 3;
+        }
+    }
+}

@@ -1,0 +1,85 @@
+package org.miron.cli;
+
+import java.io.File;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+
+import org.eclipse.emf.ecore.resource.Resource;
+import org.miron.generator.WeightPolicy;
+import org.miron.generator.standalone.BatchGeneration;
+import org.miron.generator.standalone.ModelLoader;
+
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * `miron generate FILE.miron... [-o DIR] [--weights need|metric]`: validates the models and
+ * everything they import, then writes name.ext.xml, name.mzn, name.dzn and name.io.json per model
+ * with {@link MironGenerator} through a file-system access on DIR. Any error (validation or
+ * generation, of any model) is printed and nothing at all is written.
+ */
+@Command(name = "generate", mixinStandardHelpOptions = true,
+        description = "Generates the woven behaviour tree (name.ext.xml), the MiniZinc model (name.mzn, name.dzn) "
+                + "and the engine's input/output map (name.io.json) of MIRoN models.",
+        exitCodeListHeading = "Exit codes:%n",
+        exitCodeList = { "0:generated", "1:model errors (listed; nothing written)", "2:usage error" })
+public class GenerateCommand implements Callable<Integer> {
+
+    @Parameters(arity = "1..*", paramLabel = "FILE.miron", description = "MIRoN models to generate.")
+    List<File> files;
+
+    @Option(names = { "-o", "--output" }, paramLabel = "DIR", defaultValue = ".",
+            description = "Output folder (default: the current folder); created when missing.")
+    File output;
+
+    @Option(names = "--weights", paramLabel = "need|metric", defaultValue = "need",
+            description = "Objective weights: need (default, weight = 1 - metric: the least fulfilled property "
+                    + "matters most) or metric (weight = metric, as the original MIRoN tools).")
+    String weights;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        WeightPolicy policy = WeightPolicy.of(weights);
+        if (policy == null) {
+            throw new ParameterException(spec.commandLine(),
+                    "--weights must be need or metric, not '" + weights + "'");
+        }
+        Integer usage = Files.checkReadable(files, spec);
+        if (usage != null) {
+            return usage;
+        }
+        PrintWriter err = spec.commandLine().getErr();
+        for (File file : files) {
+            if (!file.getName().endsWith(".miron")) {
+                err.println(file + ": error: generate needs .miron models");
+                err.flush();
+                return Files.USAGE;
+            }
+        }
+        ModelLoader loader = new ModelLoader();
+        List<Resource> resources = new ArrayList<>();
+        files.forEach(f -> resources.add(loader.load(f)));
+        Path dir = output.toPath();
+        BatchGeneration.Outcome outcome = new BatchGeneration(loader, policy).run(resources, BatchGeneration.folder(dir));
+        PrintWriter out = spec.commandLine().getOut();
+        outcome.validation().forEach(out::println);
+        outcome.generationErrors().forEach(out::println);
+        outcome.written().forEach(name -> out.println("wrote " + dir.resolve(name)));
+        out.flush();
+        if (outcome.stage() == BatchGeneration.Stage.WRITE_FAILED) {
+            err.println(dir + ": error: cannot write: " + outcome.writeError());
+            err.flush();
+        }
+        return outcome.succeeded() ? 0 : 1;
+    }
+}

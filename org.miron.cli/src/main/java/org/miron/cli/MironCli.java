@@ -1,0 +1,39 @@
+package org.miron.cli;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The `miron` command: checks, formats and generates models, and runs the runtime components. */
+@Command(name = "miron", mixinStandardHelpOptions = true, versionProvider = BuildVersion.class,
+        description = "MIRoN toolchain: behaviour trees, RoQME and MIRoN models for self-adaptive robots: check, "
+                + "format and generate models; serve them to editors (lsp); run the broker, engine, skill-interface mock, scenario player and "
+                + "BT executor; or all of them at once with demo.",
+        subcommands = { CheckCommand.class, FormatCommand.class, GenerateCommand.class, DemoCommand.class,
+                BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class,
+                ExecuteCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
+public class MironCli implements Runnable {
+
+    @Override
+    public void run() {
+        // No subcommand: a usage error, as for any other malformed command line.
+        throw new CommandLine.ParameterException(new CommandLine(this), "missing command");
+    }
+
+    public static void main(String[] args) {
+        // One-line log records from the runtime components: "2026-11-21 08:00:00 INFO engine: ..."
+        if (System.getProperty("java.util.logging.SimpleFormatter.format") == null) {
+            System.setProperty("java.util.logging.SimpleFormatter.format", "%1$tF %1$tT %4$s %5$s%6$s%n");
+        }
+        System.exit(run(args));
+    }
+
+    /** Runs the command line and returns its exit code: 0 ok, 1 model errors, 2 usage. */
+    public static int run(String... args) {
+        return commandLine().execute(args);
+    }
+
+    /** The command line, for callers that redirect its output (tests, other tools). */
+    public static CommandLine commandLine() {
+        return new CommandLine(new MironCli());
+    }
+}

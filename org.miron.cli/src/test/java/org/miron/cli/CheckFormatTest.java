@@ -1,0 +1,155 @@
+package org.miron.cli;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import picocli.CommandLine;
+
+/** `miron check` on real files: issue codes in the text lines, and `--format json` for tools. */
+public class CheckFormatTest {
+    private static final File ROOT = new File(System.getProperty("miron.root", ".."));
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    @Rule
+    public TemporaryFolder temp = new TemporaryFolder();
+
+    private final StringWriter out = new StringWriter();
+    private final StringWriter err = new StringWriter();
+
+    private int miron(String... args) {
+        CommandLine cli = MironCli.commandLine();
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        return cli.execute(args);
+    }
+
+    private File write(String name, String text) throws IOException {
+        File file = new File(temp.getRoot(), name);
+        file.getParentFile().mkdirs();
+        Files.writeString(file.toPath(), text);
+        return file;
+    }
+
+    private List<JsonNode> jsonLines() throws IOException {
+        List<JsonNode> nodes = new ArrayList<>();
+        for (String line : out.toString().split("\\R")) {
+            if (!line.isEmpty()) {
+                nodes.add(JSON.readTree(line));
+            }
+        }
+        return nodes;
+    }
+
+    @Test
+    public void textLinesCarryTheCodeOfErrorsAndWarnings() throws IOException {
+        File file = write("mixed.bt", "<root>\n  <BehaviorTree ID=\"M\">\n    <Sequence>\n"
+                + "      <RetryUntilSuccesful num_attempts=\"2\"><AlwaysSuccess/></RetryUntilSuccesful>\n"
+                + "      <Inverter/>\n    </Sequence>\n  </BehaviorTree>\n</root>\n");
+        assertEquals(1, miron("check", file.getPath()));
+        assertEquals(file.getPath() + ":4:8: warning [bt.retry-old-spelling]: RetryUntilSuccesful is the BehaviorTree.CPP"
+                + " 3.5-3.6 spelling; 3.7 and later only load RetryUntilSuccessful\n"
+                + file.getPath() + ":5:8: error [bt.decorator-child-count]: Inverter needs exactly one child, it has none\n",
+                out.toString().replace(System.lineSeparator(), "\n"));
+    }
+
+    @Test
+    public void textIsTheDefaultAndCanBeAskedFor() throws IOException {
+        File file = write("broken.bt", "<root><BehaviorTree ID=\"M\"><Inverter/></BehaviorTree></root>");
+        assertEquals(1, miron("check", "--format", "text", file.getPath()));
+        String explicit = out.toString();
+        out.getBuffer().setLength(0);
+        assertEquals(1, miron("check", file.getPath()));
+        assertEquals(explicit, out.toString());
+    }
+
+    @Test
+    public void jsonGivesOneObjectPerDiagnosticWithPositionCodeAndData() throws IOException {
+        File file = write("typo.bt", "<root main_tree_to_execute=\"Main\">\n"
+                + "  <BehaviorTree ID=\"Main\">\n    <Sequence>\n      <SubTree ID=\"Navigat\"/>\n"
+                + "      <RetryUntilSuccesful num_attempts=\"2\"><AlwaysSuccess/></RetryUntilSuccesful>\n"
+                + "    </Sequence>\n  </BehaviorTree>\n"
+                + "  <BehaviorTree ID=\"Navigate\"><AlwaysSuccess/></BehaviorTree>\n</root>\n");
+        assertEquals(1, miron("check", "--format", "json", file.getPath()));
+        List<JsonNode> diagnostics = jsonLines();
+        assertEquals(out.toString(), 2, diagnostics.size());
+
+        JsonNode unknown = diagnostics.get(0);
+        assertEquals(file.getPath(), unknown.get("file").asText());
+        assertEquals(4, unknown.get("line").asInt());
+        assertEquals(19, unknown.get("column").asInt());
+        assertEquals(4, unknown.get("endLine").asInt());
+        assertEquals(19 + "\"Navigat\"".length(), unknown.get("endColumn").asInt());
+        assertEquals("error", unknown.get("severity").asText());
+        assertEquals("bt.unknown-subtree", unknown.get("code").asText());
+        assertEquals("unknown SubTree ID 'Navigat': no BehaviorTree with this ID in this file or the files it includes",
+                unknown.get("message").asText());
+        assertEquals("[\"Navigate\"]", unknown.get("data").toString());
+
+        JsonNode retry = diagnostics.get(1);
+        assertEquals("warning", retry.get("severity").asText());
+        assertEquals("bt.retry-old-spelling", retry.get("code").asText());
+        assertEquals("[\"RetryUntilSuccessful\"]", retry.get("data").toString());
+    }
+
+    @Test
+    public void jsonLeavesOutDataWhenThereIsNone() throws IOException {
+        File file = write("broken.bt", "<root><BehaviorTree ID=\"M\"><Inverter/></BehaviorTree></root>");
+        assertEquals(1, miron("check", "--format", "json", file.getPath()));
+        JsonNode diagnostic = jsonLines().get(0);
+        assertEquals("bt.decorator-child-count", diagnostic.get("code").asText());
+        assertFalse(diagnostic.toString(), diagnostic.has("data"));
+    }
+
+    @Test
+    public void jsonOfAMironModelCarriesTheDidYouMeanName() throws IOException {
+        write("base.roqme", "roqme Base\ncontext battery : number (0:100)\nproperty safety\n");
+        File model = write("m.miron", "import \"base.roqme\"\n\n@varpoint speed : number (0:0.5:1)\n\n"
+                + "rule r : Base.batery < 20 implies speed = 0.5\n");
+        assertEquals(1, miron("check", "--format", "json", model.getPath()));
+        List<JsonNode> diagnostics = jsonLines();
+        assertEquals(out.toString(), 1, diagnostics.size());
+        assertEquals(5, diagnostics.get(0).get("line").asInt());
+        assertEquals("roqme.unknown-reference", diagnostics.get(0).get("code").asText());
+        assertEquals("[\"Base.battery\"]", diagnostics.get(0).get("data").toString());
+    }
+
+    @Test
+    public void validFilesPrintNothingInJson() {
+        assertEquals(0, miron("check", "--format", "json",
+                new File(ROOT, "examples/intralogistics/intralogistics.miron").getPath()));
+        assertEquals("", out.toString());
+    }
+
+    @Test
+    public void warningsAloneExitWithZeroInJson() throws IOException {
+        File file = write("old.bt", "<root><BehaviorTree ID=\"M\"><FallbackStar><AlwaysSuccess/></FallbackStar></BehaviorTree></root>");
+        assertEquals(0, miron("check", "--format", "json", file.getPath()));
+        JsonNode warning = jsonLines().get(0);
+        assertEquals("bt.fallback-star", warning.get("code").asText());
+        assertEquals("[\"Fallback\",\"ReactiveFallback\"]", warning.get("data").toString());
+    }
+
+    @Test
+    public void anUnknownFormatIsAUsageError() throws IOException {
+        File file = write("good.bt", "<root><BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree></root>");
+        assertEquals(2, miron("check", "--format", "xml", file.getPath()));
+        assertTrue(err.toString(), err.toString().contains("--format"));
+        assertEquals("", out.toString());
+    }
+}

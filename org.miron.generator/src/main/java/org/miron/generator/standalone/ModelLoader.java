@@ -1,0 +1,117 @@
+package org.miron.generator.standalone;
+
+import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+
+import org.eclipse.emf.common.util.URI;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.util.LineAndColumn;
+import org.eclipse.xtext.resource.XtextResource;
+import org.eclipse.xtext.resource.XtextResourceFactory;
+import org.eclipse.xtext.resource.XtextResourceSet;
+import org.eclipse.xtext.util.CancelIndicator;
+import org.eclipse.xtext.validation.CheckMode;
+import org.eclipse.xtext.validation.Issue;
+import org.miron.bt.BtStandaloneSetup;
+import org.miron.dsl.MironStandaloneSetup;
+
+import com.google.inject.Injector;
+
+/**
+ * Loads model files of any MIRoN language into one resource set, with everything they import,
+ * and validates all of them. The language of a file is chosen by its extension.
+ */
+public class ModelLoader {
+    /** Woven trees are written as name.ext.xml and are BT files too. */
+    private static final Set<String> EXTENSIONS = Set.of("bt", "xml", "roqme", "miron");
+
+    private final XtextResourceSet resourceSet;
+    private final Path workingDir = Path.of("").toAbsolutePath();
+
+    public ModelLoader() {
+        // MIRoN's set-up also registers RoQME and BT: a .miron model loads what it imports.
+        Injector miron = MironStandaloneSetup.doSetup();
+        Injector bt = BtStandaloneSetup.doSetup();
+        resourceSet = miron.getInstance(XtextResourceSet.class);
+        resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap()
+                .put("xml", bt.getInstance(XtextResourceFactory.class));
+    }
+
+    public static boolean supports(String fileName) {
+        int dot = fileName.lastIndexOf('.');
+        return dot >= 0 && EXTENSIONS.contains(fileName.substring(dot + 1));
+    }
+
+    public static String supportedExtensions() {
+        return ".bt (or a woven .xml), .roqme or .miron";
+    }
+
+    public XtextResourceSet resourceSet() {
+        return resourceSet;
+    }
+
+    /** Loads a file (which must exist) and resolves all its references. */
+    public Resource load(File file) {
+        Resource resource = resourceSet.getResource(URI.createFileURI(file.getAbsolutePath()), true);
+        EcoreUtil.resolveAll(resource);
+        return resource;
+    }
+
+    /** Validates every resource loaded so far (the given files and what they import). */
+    public List<Diagnostic> validateAll() {
+        // Validation may load more files (includes found while linking): iterate over a snapshot.
+        EcoreUtil.resolveAll(resourceSet);
+        Set<Diagnostic> diagnostics = new TreeSet<>();
+        for (Resource resource : new ArrayList<>(resourceSet.getResources())) {
+            if (!(resource instanceof XtextResource)) {
+                continue;
+            }
+            List<Issue> issues = ((XtextResource) resource).getResourceServiceProvider().getResourceValidator()
+                    .validate(resource, CheckMode.ALL, CancelIndicator.NullImpl);
+            for (Issue issue : issues) {
+                Diagnostic.Severity severity = switch (issue.getSeverity()) {
+                    case ERROR -> Diagnostic.Severity.ERROR;
+                    case WARNING -> Diagnostic.Severity.WARNING;
+                    default -> null;
+                };
+                if (severity != null) {
+                    diagnostics.add(new Diagnostic(displayPath(resource.getURI()), number(issue.getLineNumber()),
+                            number(issue.getColumn()), number(issue.getLineNumberEnd()), number(issue.getColumnEnd()),
+                            severity, issue.getCode(), issue.getData() == null ? List.of() : List.of(issue.getData()),
+                            issue.getMessage()));
+                }
+            }
+        }
+        return new ArrayList<>(diagnostics);
+    }
+
+    /** A problem found by a generator, positioned at the model element it is about. */
+    public Diagnostic error(EObject element, String message) {
+        Resource resource = element == null ? null : element.eResource();
+        String file = resource == null ? "?" : displayPath(resource.getURI());
+        ICompositeNode node = NodeModelUtils.findActualNodeFor(element);
+        if (node == null) {
+            return new Diagnostic(file, 0, 0, Diagnostic.Severity.ERROR, message);
+        }
+        LineAndColumn position = NodeModelUtils.getLineAndColumn(node, node.getOffset());
+        return new Diagnostic(file, position.getLine(), position.getColumn(), Diagnostic.Severity.ERROR, message);
+    }
+
+    private static int number(Integer value) {
+        return value == null ? 0 : value;
+    }
+
+    /** A file's path as the user sees it: relative to the working directory when inside it. */
+    public String displayPath(URI uri) {
+        Path path = Path.of(uri.toFileString());
+        return path.startsWith(workingDir) ? workingDir.relativize(path).toString() : path.toString();
+    }
+}
