@@ -7,6 +7,7 @@ import org.eclipse.lsp4j.ClientCapabilities;
 import org.eclipse.lsp4j.ExecuteCommandCapabilities;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
+import org.eclipse.lsp4j.ServerCapabilities;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 
@@ -16,6 +17,7 @@ import org.eclipse.xtext.ide.server.LanguageServerImpl;
  * offered: Xtext would leave its command registry uninitialized and fail on the first command).
  */
 public class MironLanguageServerImpl extends LanguageServerImpl {
+    private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
@@ -35,5 +37,15 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
             workspace.setWorkspaceFolders(true);
         }
         return super.initialize(params);
+    }
+
+    // Completion also starts where the three languages want it: '<' and '"' in BT, '::' in MIRoN.
+    @Override
+    protected ServerCapabilities createServerCapabilities(InitializeParams params) {
+        ServerCapabilities capabilities = super.createServerCapabilities(params);
+        if (capabilities.getCompletionProvider() != null) {
+            capabilities.getCompletionProvider().setTriggerCharacters(TRIGGER_CHARACTERS);
+        }
+        return capabilities;
     }
 }

@@ -33,7 +33,7 @@ public class ProcessLspTest {
         try {
             LspClient client = new LspClient(process.getInputStream(), process.getOutputStream());
             InitializeResult result = client.initialize(workspace);
-            assertNotNull(result.getCapabilities().getCompletionProvider());
+            assertTrue(result.getCapabilities().getCompletionProvider().getTriggerCharacters().containsAll(List.of(".", ":", "<")));
             assertTrue(result.getCapabilities().getExecuteCommandProvider().getCommands().contains("miron.generate"));
             String uri = client.open(workspace.resolve("intralogistics.miron"));
             client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
