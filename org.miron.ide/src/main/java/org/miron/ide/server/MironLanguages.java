@@ -3,8 +3,11 @@ package org.miron.ide.server;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceFactory;
-import org.eclipse.xtext.resource.impl.ResourceServiceProviderRegistryImpl;
+import org.eclipse.xtext.Constants;
+import org.miron.bt.BtRuntimeModule;
+import org.miron.bt.ide.BtIdeModule;
 import org.miron.bt.ide.BtIdeSetup;
+import com.google.inject.name.Names;
 import org.miron.dsl.MironRuntimeModule;
 import org.miron.dsl.ide.MironIdeModule;
 import org.miron.dsl.ide.MironIdeSetup;
@@ -37,19 +40,32 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
     private static IResourceServiceProvider.Registry create() {
         Injector miron = new MironServerSetup().createInjectorAndDoEMFRegistration();
         Injector roqme = new RoqmeIdeSetup().createInjectorAndDoEMFRegistration();
-        Injector bt = new BtIdeSetup().createInjectorAndDoEMFRegistration();
-        // Woven trees (name.ext.xml) are BT files.
+        Injector bt = new BtServerSetup().createInjectorAndDoEMFRegistration();
+        // Woven trees (name.ext.xml) and other BehaviorTree.CPP XML files are BT files (LanguageRegistry).
         IResourceServiceProvider btServices = bt.getInstance(IResourceServiceProvider.class);
         IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().put("xml", btServices);
         Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap()
                 .put("xml", bt.getInstance(XtextResourceFactory.class));
 
-        ResourceServiceProviderRegistryImpl result = new ResourceServiceProviderRegistryImpl();
+        LanguageRegistry result = new LanguageRegistry();
         result.getExtensionToFactoryMap().put("bt", btServices);
         result.getExtensionToFactoryMap().put("xml", btServices);
         result.getExtensionToFactoryMap().put("roqme", roqme.getInstance(IResourceServiceProvider.class));
         result.getExtensionToFactoryMap().put("miron", miron.getInstance(IResourceServiceProvider.class));
         return result;
+    }
+
+    /**
+     * BT's ide set-up where .xml is a BT extension too: Xtext's builder only builds (and so only
+     * validates and publishes diagnostics for) files whose extension the language declares.
+     */
+    private static final class BtServerSetup extends BtIdeSetup {
+        @Override
+        public Injector createInjector() {
+            return Guice.createInjector(Modules2.mixin(new BtRuntimeModule(), new BtIdeModule(),
+                    binder -> binder.bind(String.class).annotatedWith(Names.named(Constants.FILE_EXTENSIONS))
+                            .toInstance("bt,xml")));
+        }
     }
 
     /** MIRoN's ide set-up plus the services that need the generators (miron.generate). */

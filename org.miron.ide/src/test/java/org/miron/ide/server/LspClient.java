@@ -147,6 +147,11 @@ public final class LspClient implements LanguageClient, AutoCloseable {
         }
     }
 
+    /** What was last published for a file, or null. */
+    public List<Diagnostic> published(String uri) {
+        return diagnostics.get(uri);
+    }
+
     /** Forgets what was published, so the next wait sees only new diagnostics. */
     public void forget(String uri) {
         synchronized (diagnostics) {

@@ -118,6 +118,25 @@ public class RobustnessLspTest {
         }
     }
 
+    @Test
+    public void onlyXmlFilesThatAreTreesAreBehaviourTrees() throws Exception {
+        Path other = Workspaces.copyOfExample("intralogistics");
+        try (LspClient fresh = new LspClient()) {
+            Files.writeString(other.resolve("pom.xml"), "<project><modelVersion>4.0.0</modelVersion></project>\n");
+            Files.writeString(other.resolve("tree.xml"), "<?xml version=\"1.0\"?>\n<root main_tree_to_execute=\"T\">"
+                    + "<BehaviorTree ID=\"T\"><Inverter/></BehaviorTree></root>\n");
+            fresh.initialize(other);
+            String pom = fresh.open(other.resolve("pom.xml"));
+            String tree = fresh.open(other.resolve("tree.xml"));
+            fresh.awaitDiagnostics(tree, IntralogisticsLspTest::hasErrors);
+            // Both files were opened before the tree was validated: the pom was not taken for a tree.
+            assertTrue(String.valueOf(fresh.published(pom)), fresh.published(pom) == null || fresh.published(pom).isEmpty());
+            assertAlive();
+        } finally {
+            Workspaces.delete(other);
+        }
+    }
+
     /** Waits for a request to end, with an answer or an error response: either is fine, a hang is not. */
     private static void settle(java.util.concurrent.CompletableFuture<?> request) throws Exception {
         try {
