@@ -106,6 +106,38 @@ public class IntralogisticsLspTest {
     }
 
     @Test
+    public void definitionGoesToTheBtNodeAndTheRoqmeProperty() throws Exception {
+        String uri = client.open(miron);
+        client.awaitDiagnostics(uri, d -> true);
+        String text = Files.readString(miron);
+        assertTrue(definitionLine(uri, text, "} in main.PickDeliverChargeSub", bt)
+                .contains("name=\"PickDeliverChargeSubtree\""));
+        assertTrue(definitionLine(uri, text, "10 affects roqme.saf", roqme).contains("property safety"));
+        assertTrue(definitionLine(uri, text, "rule noBattery : roqme.power_auto", roqme).contains("property power_autonomy"));
+    }
+
+    /** The line of the definition of what is just before the end of `after`, in the expected file. */
+    private String definitionLine(String uri, String text, String after, Path expectedFile) throws Exception {
+        List<? extends Location> locations = client.server().getTextDocumentService()
+                .definition(new DefinitionParams(new TextDocumentIdentifier(uri), positionAfter(text, after)))
+                .get(60, TimeUnit.SECONDS).getLeft();
+        assertEquals(after, 1, locations.size());
+        assertEquals(LspClient.uri(expectedFile), locations.get(0).getUri());
+        return Files.readAllLines(expectedFile).get(locations.get(0).getRange().getStart().getLine());
+    }
+
+    @Test
+    public void formattingIndentsABehaviourTree() throws Exception {
+        String text = Files.readString(bt).replace("\n      <Action ID=\"objectdrop\"", "\n<Action ID=\"objectdrop\"");
+        String uri = client.open(bt, text);
+        client.awaitDiagnostics(uri, d -> true);
+        List<? extends TextEdit> edits = client.server().getTextDocumentService()
+                .formatting(new DocumentFormattingParams(new TextDocumentIdentifier(uri), new FormattingOptions(2, true)))
+                .get(60, TimeUnit.SECONDS);
+        assertTrue(TextEdits.apply(text, edits).contains("\n      <Action ID=\"objectdrop\""));
+    }
+
+    @Test
     public void formattingFixesTheLayout() throws Exception {
         String text = Files.readString(miron).replace("rule noBattery : roqme.power_autonomy < 0.3",
                 "rule   noBattery :   roqme.power_autonomy<0.3");
