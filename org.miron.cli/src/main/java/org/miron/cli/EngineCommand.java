@@ -12,7 +12,9 @@ import picocli.CommandLine.Option;
 
 /** {@code miron engine --io model.io.json}: the adaptation engine. */
 @Command(name = "engine", mixinStandardHelpOptions = true,
-        description = "Run the adaptation engine on a generated name.io.json (+ .mzn/.dzn).")
+        description = "Run the adaptation engine on a generated name.io.json (+ .mzn/.dzn).",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = { ExitCodes.STARTUP, ExitCodes.SIGTERM, ExitCodes.SIGINT })
 public final class EngineCommand implements Callable<Integer> {
     @Option(names = "--io", required = true, paramLabel = "FILE", description = "the generated name.io.json")
     Path io;

@@ -4,6 +4,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.time.ZoneId;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.miron.runtime.Endpoints;
@@ -11,6 +13,7 @@ import org.miron.runtime.executor.BtBuildException;
 import org.miron.runtime.executor.ConsoleTracePrinter;
 import org.miron.runtime.executor.NodeStatus;
 import org.miron.runtime.live.LiveExecutor;
+import org.miron.runtime.skill.SkillDeadlines;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -20,9 +23,9 @@ import picocli.CommandLine.Parameters;
 @Command(name = "execute", mixinStandardHelpOptions = true,
         description = "Run a behaviour tree (.bt or woven .ext.xml): VariantAction nodes follow the engine's "
                 + "decisions, other actions are pushed as skills to the skill interface; prints a trace.",
-        exitCodeListHeading = "Exit codes:%n",
+        exitCodeListHeading = ExitCodes.HEADING,
         exitCodeList = { "0:the tree succeeded", "1:the tree failed", "2:the tree cannot be loaded",
-                "3:stopped (SIGTERM/Ctrl-C) while running" })
+                ExitCodes.SIGTERM + " while running", ExitCodes.SIGINT + " while running" })
 public final class ExecuteCommand implements Callable<Integer> {
     @Parameters(paramLabel = "TREE", description = "the tree file")
     Path treeFile;
@@ -45,6 +48,11 @@ public final class ExecuteCommand implements Callable<Integer> {
     @Mixin
     BrokerEndpoints.BusOut busOut = new BrokerEndpoints.BusOut();
 
+    @Option(names = "--skill-deadline", paramLabel = "SKILL=MS",
+            description = "result deadline of a pushed skill (repeatable; * for the others; default 120000): "
+                    + "without a result by then the node fails and the skill is aborted")
+    Map<String, Long> skillDeadlines = new LinkedHashMap<>();
+
     @Override
     public Integer call() {
         if (!Files.isRegularFile(treeFile)) {
@@ -53,6 +61,12 @@ public final class ExecuteCommand implements Callable<Integer> {
         }
         Endpoints endpoints = new Endpoints(request.endpoint, Endpoints.DEFAULT_SKILL, skillEvents, busIn.endpoint, busOut.endpoint);
         try (LiveExecutor executor = new LiveExecutor(endpoints)) {
+            try {
+                executor.skillDeadlines(new SkillDeadlines(skillDeadlines));
+            } catch (IllegalArgumentException e) {
+                System.err.println("miron execute: error: " + e.getMessage());
+                return 2;
+            }
             try {
                 executor.build(treeFile, new ConsoleTracePrinter(System.out, ZoneId.systemDefault(), showResets));
             } catch (BtBuildException e) {
@@ -76,6 +90,7 @@ public final class ExecuteCommand implements Callable<Integer> {
                 finished.countDown();
             }
             System.out.println("tree " + executor.tree().id() + " finished: " + status);
+            // RUNNING: stopped by a signal; the JVM then exits with the signal's status (ExitCodes)
             return status == NodeStatus.SUCCESS ? 0 : status == NodeStatus.FAILURE ? 1 : 3;
         }
     }

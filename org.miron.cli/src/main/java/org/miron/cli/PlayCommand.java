@@ -13,7 +13,10 @@ import picocli.CommandLine.Parameters;
 
 /** {@code miron play SCENARIO}: publishes RoQME contexts and estimates over time. */
 @Command(name = "play", mixinStandardHelpOptions = true,
-        description = "Play a timed scenario of RoQME estimates and contexts on the bus.")
+        description = "Play a timed scenario of RoQME estimates and contexts on the bus.",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = { "0:every step published", "1:interrupted", ExitCodes.STARTUP, ExitCodes.SIGTERM,
+                ExitCodes.SIGINT })
 public final class PlayCommand implements Callable<Integer> {
     @Parameters(paramLabel = "SCENARIO", description = "JSON array of {\"at\": ms, \"estimate\"|\"context\": {...}}")
     Path scenario;

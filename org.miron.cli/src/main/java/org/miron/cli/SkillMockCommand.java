@@ -11,7 +11,9 @@ import picocli.CommandLine.Option;
 
 /** {@code miron skill-mock}: the SmartSoft ComponentSkillInterface stand-in. */
 @Command(name = "skill-mock", mixinStandardHelpOptions = true,
-        description = "Run the mock SmartSoft skill interface (REP queries, PUB skill results).")
+        description = "Run the mock SmartSoft skill interface (REP queries, PUB skill results).",
+        exitCodeListHeading = ExitCodes.HEADING,
+        exitCodeList = { ExitCodes.STARTUP, ExitCodes.SIGTERM, ExitCodes.SIGINT })
 public final class SkillMockCommand implements Callable<Integer> {
     @Option(names = "--rep", description = "REP endpoint for queries (default: ${DEFAULT-VALUE})")
     String rep = Endpoints.DEFAULT_SKILL;

@@ -41,6 +41,17 @@ public class CliTest {
     }
 
     @Test
+    public void versionComesFromTheBuildOnEveryCommand() {
+        // The version resource is written by the build (build.gradle: versionResource).
+        String expected = "miron " + System.getProperty("miron.version", "(miron.version not set by the build)");
+        for (String[] args : new String[][] { { "--version" }, { "check", "--version" }, { "broker", "-V" } }) {
+            out.getBuffer().setLength(0);
+            assertEquals(String.join(" ", args), 0, miron(args));
+            assertEquals(String.join(" ", args), expected, out.toString().trim());
+        }
+    }
+
+    @Test
     public void validExampleChecksClean() {
         assertEquals(0, miron("check", new File(ROOT, "examples/intralogistics/intralogistics.bt").getPath()));
         assertEquals("", out.toString());

@@ -1,11 +1,20 @@
 package org.miron.runtime;
 
+import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
-/** The one shared Jackson mapper (thread-safe once configured) and small helpers. */
+/**
+ * The one shared Jackson mapper (thread-safe once configured) and small helpers. Every JSON read
+ * of the runtime (bus bodies, skill requests and results, skill tables, scenarios, io.json) goes
+ * through it. It rejects trailing tokens: by default Jackson stops after the first value, so
+ * {@code {"value":0.2}xyz} would read as a valid estimate.
+ */
 public final class Json {
-    public static final ObjectMapper MAPPER = new ObjectMapper();
+    public static final ObjectMapper MAPPER = JsonMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .build();
 
     private Json() {
     }

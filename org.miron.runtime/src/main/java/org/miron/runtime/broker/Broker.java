@@ -1,6 +1,8 @@
 package org.miron.runtime.broker;
 
 import org.miron.runtime.Contexts;
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.logging.Logger;
 import org.miron.runtime.Endpoints;
 import org.zeromq.ZContext;
@@ -13,6 +15,7 @@ import org.zeromq.ZContext;
 public final class Broker implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(Broker.class.getName());
     private final Endpoints endpoints;
+    private final Path cacheFile; // null: the cache lives in memory only
     private final ZContext ctx = Contexts.create();
     private final LastValueCache cache = new LastValueCache(10_000);
     private RequestProxy requests;
@@ -20,11 +23,30 @@ public final class Broker implements AutoCloseable {
     private Thread requestThread;
     private Thread busThread;
 
+    private Thread snapshotThread;
+    private CacheFile snapshot;
+
     public Broker(Endpoints endpoints) {
+        this(endpoints, null);
+    }
+
+    /** @param cacheFile where the last-value cache is snapshotted and reloaded from on start; null: none */
+    public Broker(Endpoints endpoints, Path cacheFile) {
         this.endpoints = endpoints;
+        this.cacheFile = cacheFile;
     }
 
     public Broker start() {
+        if (cacheFile != null) {
+            snapshot = new CacheFile(cacheFile, cache);
+            try {
+                int n = snapshot.load();
+                LOG.info("broker: " + n + " cached messages restored from " + cacheFile);
+            } catch (IOException | RuntimeException e) {
+                ctx.close();
+                throw new IllegalStateException("broker cannot load its cache file " + cacheFile + ": " + e.getMessage(), e);
+            }
+        }
         requests = new RequestProxy(ctx, endpoints.request(), endpoints.skill());
         bus = new BusProxy(ctx, endpoints.busIn(), endpoints.busOut(), cache);
         try {
@@ -40,6 +62,11 @@ public final class Broker implements AutoCloseable {
         busThread.setDaemon(true);
         requestThread.start();
         busThread.start();
+        if (snapshot != null) {
+            snapshotThread = new Thread(this::snapshotLoop, "broker-cache-file");
+            snapshotThread.setDaemon(true);
+            snapshotThread.start();
+        }
         LOG.info("broker: requests " + endpoints.request() + " -> " + endpoints.skill()
                 + ", bus " + endpoints.busIn() + " -> " + endpoints.busOut());
         return this;
@@ -50,6 +77,27 @@ public final class Broker implements AutoCloseable {
         return cache.size();
     }
 
+    private void snapshotLoop() {
+        while (!Thread.currentThread().isInterrupted()) {
+            try {
+                Thread.sleep(CacheFile.INTERVAL_MS);
+            } catch (InterruptedException e) {
+                return;
+            }
+            snapshot.saveIfChanged();
+        }
+    }
+
+    /** This run's epoch, announced on {@code miron.broker.hello}; a new epoch means a restarted broker. */
+    public String epoch() {
+        return bus.epoch();
+    }
+
+    /** Messages forwarded but refused by the cache as invalid (diagnostics, tests). */
+    public long refusedByCache() {
+        return bus == null ? 0 : bus.refused();
+    }
+
     @Override
     public void close() {
         if (requests != null) {
@@ -57,6 +105,11 @@ public final class Broker implements AutoCloseable {
             bus.stop();
             join(requestThread);
             join(busThread);
+        }
+        if (snapshotThread != null) {
+            snapshotThread.interrupt();
+            join(snapshotThread);
+            snapshot.saveIfChanged(); // the last state, on a clean stop
         }
         ctx.close();
     }

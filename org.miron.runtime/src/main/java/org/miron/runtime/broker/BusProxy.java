@@ -1,9 +1,13 @@
 package org.miron.runtime.broker;
 
+import java.nio.charset.StandardCharsets;
+import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
+import org.miron.runtime.bus.Topics;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -22,6 +26,14 @@ import org.zeromq.ZFrame;
  * messages, and XPUB always delivers to every matching pipe, so subscribers that already hold P
  * receive an identical copy of the current value (same body, same {@code seq}): bus messages are
  * state, so that repeat is harmless and receivers may drop it by {@code seq}.
+ *
+ * <p>Restarts and replay barrier: every broker run has an epoch (random id) and caches a
+ * {@code miron.broker.hello {"epoch"}} message, so a subscriber of {@code miron.broker.} gets it
+ * on every (re)connection and sees a new epoch after a broker restart. A subscription to
+ * {@code miron.broker.sync.<id>} is answered, after its own (empty) replay, by one message on that
+ * topic: subscriptions of one connection are handled in order, so a client that subscribes to a
+ * fresh sync topic once connected knows, when the answer arrives, that the replay of all its
+ * earlier prefixes has been delivered before it.
  */
 final class BusProxy implements Runnable {
     private static final Logger LOG = Logger.getLogger(BusProxy.class.getName());
@@ -29,9 +41,13 @@ final class BusProxy implements Runnable {
     private final String inEndpoint;
     private final String outEndpoint;
     private final LastValueCache cache;
+    // unique per broker run: subscribers tell a restarted broker by it
+    private final String epoch = Long.toHexString(System.currentTimeMillis()) + "-"
+            + Long.toHexString(new SecureRandom().nextLong() & Long.MAX_VALUE);
     private ZMQ.Socket xsub;
     private ZMQ.Socket xpub;
     private volatile boolean running = true;
+    private final AtomicLong refused = new AtomicLong();
 
     BusProxy(ZContext ctx, String inEndpoint, String outEndpoint, LastValueCache cache) {
         this.ctx = ctx;
@@ -50,6 +66,20 @@ final class BusProxy implements Runnable {
         xsub.bind(inEndpoint);
         xpub.bind(outEndpoint);
         xsub.send(new byte[] {1}); // subscribe to all topics; XSUB repeats it to every new publisher
+        cache.put(List.of(Topics.BROKER_HELLO.getBytes(StandardCharsets.UTF_8), epochBody()));
+    }
+
+    String epoch() {
+        return epoch;
+    }
+
+    private byte[] epochBody() {
+        return ("{\"epoch\":\"" + epoch + "\",\"time\":" + System.currentTimeMillis() + "}").getBytes(StandardCharsets.UTF_8);
+    }
+
+    /** Messages forwarded but not cached because they were invalid. */
+    long refused() {
+        return refused.get();
     }
 
     void stop() {
@@ -86,7 +116,11 @@ final class BusProxy implements Runnable {
         for (ZFrame f : msg) {
             frames.add(f.getData());
         }
-        cache.put(frames);
+        if (!cache.put(frames) && refused.incrementAndGet() % 1000 == 1) {
+            // forwarded all the same: subscribers count bad input themselves
+            LOG.warning("bus: not caching an invalid message on " + new String(frames.get(0), StandardCharsets.UTF_8)
+                    + " (" + refused.get() + " refused so far)");
+        }
         send(xpub, frames);
         return true;
     }
@@ -103,7 +137,16 @@ final class BusProxy implements Runnable {
         for (List<byte[]> frames : cache.matching(prefix)) {
             send(xpub, frames);
         }
+        if (startsWith(prefix, SYNC)) {
+            send(xpub, List.of(prefix, epochBody())); // the replay barrier, never cached
+        }
         return true;
+    }
+
+    private static final byte[] SYNC = Topics.BROKER_SYNC_PREFIX.getBytes(StandardCharsets.UTF_8);
+
+    private static boolean startsWith(byte[] data, byte[] prefix) {
+        return data.length > prefix.length && Arrays.equals(data, 0, prefix.length, prefix, 0, prefix.length);
     }
 
     private static void send(ZMQ.Socket socket, List<byte[]> frames) {

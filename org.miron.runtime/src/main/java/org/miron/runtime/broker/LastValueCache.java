@@ -16,11 +16,13 @@ import org.miron.runtime.Json;
  * otherwise the topic alone. A late subscriber thus gets the latest estimate of each property,
  * not only of the last one published. Topics are kept as ISO-8859-1 strings so prefix matching
  * is byte-wise, exactly like ZeroMQ subscription matching. Bounded: the least recently updated
- * entry is evicted beyond {@code maxTopics}.
+ * entry is evicted beyond {@code maxTopics}. Only valid messages are cached ({@link CacheAdmission}):
+ * an invalid one never replaces the last valid value of its key.
  */
 public final class LastValueCache {
     private final int maxTopics;
     private final LinkedHashMap<String, List<byte[]>> last;
+    private long version; // bumped by every cached message: tells a snapshot writer something changed
 
     public LastValueCache(int maxTopics) {
         this.maxTopics = maxTopics;
@@ -32,14 +34,16 @@ public final class LastValueCache {
         };
     }
 
-    /** Remembers a message; frame 0 is the topic. */
-    public synchronized void put(List<byte[]> frames) {
-        if (frames.isEmpty()) {
-            return;
+    /** Remembers a valid message (frame 0 is the topic); false when it was refused. */
+    public synchronized boolean put(List<byte[]> frames) {
+        if (frames.isEmpty() || CacheAdmission.reject(frames) != null) {
+            return false;
         }
         String key = new String(frames.get(0), StandardCharsets.ISO_8859_1) + subject(frames);
         last.remove(key); // re-insert so eviction and replay order follow updates
         last.put(key, List.copyOf(frames));
+        version++;
+        return true;
     }
 
     /** "\0namespace\0name" for bodies naming a subject, "" otherwise. */
@@ -69,6 +73,10 @@ public final class LastValueCache {
             }
         }
         return out;
+    }
+
+    public synchronized long version() {
+        return version;
     }
 
     public synchronized int size() {

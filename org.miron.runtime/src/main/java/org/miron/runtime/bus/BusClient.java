@@ -2,7 +2,9 @@ package org.miron.runtime.bus;
 
 import org.miron.runtime.Contexts;
 import java.nio.charset.StandardCharsets;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CountDownLatch;
@@ -10,6 +12,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
+import org.miron.runtime.Json;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -22,11 +25,26 @@ import org.zeromq.ZMQ;
  * <p>Why an XPUB to publish: a PUB drops whatever it sends before the broker's subscription has
  * arrived (slow joiner), which would lose the engine's very first decision. The XPUB sees the
  * broker's subscribe-all message, so output is held back until the broker is really listening.
+ *
+ * <p>Broker restarts. The output XPUB keeps a pipe only while connected, so a restarted broker's
+ * XSUB shows up as a new subscribe-all message (and a lost one as an unsubscribe, which holds the
+ * output in the queue meanwhile). On every subscribe-all after the first, the last message of
+ * every {@link #publishRetained retained} key is queued again: the new broker's cache starts
+ * empty, and the component re-announces what it owns (the engine its decisions and status, the
+ * player its estimates). On the input side, {@link #onBrokerSync} follows the broker's
+ * {@code miron.broker.hello} epoch: on each new epoch (first connection or restart) it subscribes
+ * to a fresh {@code miron.broker.sync.<id>} topic and reports when the broker answers it, which is
+ * after the last-value cache replay of every other subscribed prefix (see BusProxy).
  */
 public final class BusClient implements AutoCloseable {
     /** Receives one bus message: topic and body (the second frame, empty if absent). */
     public interface Handler {
         void onMessage(String topic, byte[] body);
+    }
+
+    /** Called on the bus thread once the replay of a broker epoch is complete; {@code first}: the first epoch seen. */
+    public interface SyncListener {
+        void synced(String epoch, boolean first);
     }
 
     private static final Logger LOG = Logger.getLogger(BusClient.class.getName());
@@ -44,6 +62,16 @@ public final class BusClient implements AutoCloseable {
     private final Thread thread;
     private volatile boolean running = true;
     private volatile boolean sending;
+    private final Map<String, String[]> retained = new LinkedHashMap<>(); // guarded by itself
+    private SyncListener syncListener;
+    private final String syncId = Long.toHexString(System.nanoTime()) + Integer.toHexString(System.identityHashCode(this));
+    private String epoch; // bus thread only
+    private String syncTopic; // bus thread only
+    private int syncs; // bus thread only
+    private boolean syncAnswered; // bus thread only
+    private boolean syncedOnce; // bus thread only
+    private boolean upstream; // bus thread only: the broker currently subscribes to our output
+    private boolean upstreamSeen; // bus thread only
 
     /**
      * @param publishEndpoint   broker XSUB (bus in)
@@ -61,6 +89,12 @@ public final class BusClient implements AutoCloseable {
         this.thread.setDaemon(true);
     }
 
+    /** Follows the broker's epochs and replay (see the class comment); call before {@link #start}. */
+    public BusClient onBrokerSync(SyncListener listener) {
+        this.syncListener = listener;
+        return this;
+    }
+
     public BusClient start() {
         thread.start();
         return this;
@@ -74,6 +108,18 @@ public final class BusClient implements AutoCloseable {
                 LOG.warning(name + ": bus unreachable, dropping oldest queued messages");
             }
         }
+    }
+
+    /**
+     * Publishes and remembers the message as the current value of {@code key}; after a broker
+     * restart the last message of every key is published again.
+     */
+    public void publishRetained(String key, String topic, String body) {
+        synchronized (retained) {
+            retained.remove(key); // re-insert: re-announced in update order
+            retained.put(key, new String[] {topic, body});
+        }
+        publish(topic, body);
     }
 
     /** Waits until the broker has subscribed to our output. */
@@ -96,6 +142,9 @@ public final class BusClient implements AutoCloseable {
     private void loop() {
         ZMQ.Socket out = ctx.createSocket(SocketType.XPUB);
         out.setLinger(1000); // let queued output leave on close (the player's last events)
+        // A pipe only while connected (JeroMQ 0.6.0's flag is inverted, see RequestProxy): a broker
+        // that goes away unsubscribes, a restarted one subscribes again and is noticed.
+        out.setImmediate(false);
         Connect.connect(out, publishEndpoint);
         ZMQ.Socket in = null;
         if (subscribeEndpoint != null && !subscriptions.isEmpty()) {
@@ -104,6 +153,9 @@ public final class BusClient implements AutoCloseable {
             Connect.connect(in, subscribeEndpoint);
             for (String s : subscriptions) {
                 in.subscribe(s.getBytes(StandardCharsets.UTF_8));
+            }
+            if (syncListener != null) {
+                in.subscribe(Topics.BROKER_PREFIX.getBytes(StandardCharsets.UTF_8));
             }
         }
         try (ZMQ.Poller poller = ctx.createPoller(2)) {
@@ -116,14 +168,12 @@ public final class BusClient implements AutoCloseable {
                 // The poll only paces the loop; non-blocking reads decide (robust to missed wake-ups).
                 byte[] sub;
                 while ((sub = out.recv(ZMQ.DONTWAIT)) != null) {
-                    if (sub.length > 0 && sub[0] == 1) {
-                        ready.countDown();
-                    }
+                    upstream(sub);
                 }
                 if (in != null) {
                     receive(in);
                 }
-                if (ready.getCount() == 0) {
+                if (upstream) {
                     drain(out);
                 }
             }
@@ -136,6 +186,72 @@ public final class BusClient implements AutoCloseable {
         }
     }
 
+    /** The broker's XSUB subscribing (1) or going away (0). */
+    private void upstream(byte[] sub) {
+        if (sub.length == 0 || sub[0] > 1) {
+            return;
+        }
+        if (sub[0] == 0) {
+            upstream = false; // hold output in the queue until a broker listens again
+            return;
+        }
+        upstream = true;
+        ready.countDown();
+        if (upstreamSeen) {
+            reannounce();
+        }
+        upstreamSeen = true;
+    }
+
+    private void reannounce() {
+        synchronized (retained) {
+            if (!retained.isEmpty()) {
+                LOG.info(name + ": broker (re)connected, re-announcing " + retained.size() + " retained messages");
+            }
+            for (String[] msg : retained.values()) {
+                publish(msg[0], msg[1]);
+            }
+        }
+    }
+
+    /** Broker hello and sync answers; true when the message was one (not for the handler). */
+    private boolean brokerMessage(ZMQ.Socket in, String topic, byte[] body) {
+        if (syncListener == null || !topic.startsWith(Topics.BROKER_PREFIX)) {
+            return false;
+        }
+        if (topic.equals(Topics.BROKER_HELLO)) {
+            String e = epochOf(body);
+            if (e != null && !e.equals(epoch)) {
+                epoch = e;
+                if (syncTopic != null) {
+                    in.unsubscribe(syncTopic.getBytes(StandardCharsets.UTF_8));
+                }
+                // subscribed now, on the live connection: handled after every earlier subscription
+                syncTopic = Topics.BROKER_SYNC_PREFIX + syncId + "." + (++syncs);
+                syncAnswered = false;
+                in.subscribe(syncTopic.getBytes(StandardCharsets.UTF_8));
+            }
+        } else if (topic.equals(syncTopic) && !syncAnswered && epoch.equals(epochOf(body))) {
+            syncAnswered = true; // a reconnection re-sends our subscriptions: report once per epoch
+            boolean first = !syncedOnce;
+            syncedOnce = true;
+            try {
+                syncListener.synced(epoch, first);
+            } catch (RuntimeException e) {
+                LOG.warning(name + ": sync listener failed: " + e);
+            }
+        }
+        return subscriptions.stream().noneMatch(topic::startsWith);
+    }
+
+    private static String epochOf(byte[] body) {
+        try {
+            return Json.MAPPER.readTree(body).path("epoch").asText(null);
+        } catch (java.io.IOException | RuntimeException e) {
+            return null;
+        }
+    }
+
     private void receive(ZMQ.Socket in) {
         byte[] topic = in.recv(ZMQ.DONTWAIT);
         while (topic != null) {
@@ -144,7 +260,10 @@ public final class BusClient implements AutoCloseable {
                 in.recv(); // extra frames are not part of the protocol
             }
             try {
-                handler.onMessage(new String(topic, StandardCharsets.UTF_8), body);
+                String t = new String(topic, StandardCharsets.UTF_8);
+                if (!brokerMessage(in, t, body)) {
+                    handler.onMessage(t, body);
+                }
             } catch (RuntimeException e) {
                 LOG.warning(name + ": handler failed on " + new String(topic, StandardCharsets.UTF_8) + ": " + e);
             }

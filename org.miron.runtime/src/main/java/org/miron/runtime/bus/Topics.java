@@ -9,6 +9,10 @@ public final class Topics {
     public static final String OVERRIDE_PREFIX = "miron.override.";
     public static final String DECISION = "miron.decision";
     public static final String STATUS = "miron.status";
+    /** The broker's own topics: its hello (with its epoch) and the replies to sync subscriptions. */
+    public static final String BROKER_PREFIX = "miron.broker.";
+    public static final String BROKER_HELLO = "miron.broker.hello";
+    public static final String BROKER_SYNC_PREFIX = "miron.broker.sync.";
 
     private Topics() {
     }

@@ -7,6 +7,8 @@ import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.BusClient;
@@ -35,6 +37,7 @@ public final class Engine implements AutoCloseable {
     private volatile boolean running;
     private volatile long lastStatusNanos = System.nanoTime();
     private long seq;
+    private final CountDownLatch replayed = new CountDownLatch(1); // counted down by the first broker sync
 
     public Engine(IoModel model, SolverBackend backend, EngineOptions options) {
         this.model = model;
@@ -71,7 +74,7 @@ public final class Engine implements AutoCloseable {
         }
         running = true;
         bus = new BusClient("engine", options.busIn, options.busOut,
-                List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).start();
+                List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).onBrokerSync(this::onBrokerSync).start();
         sender = new ParameterSender(options.request, options.ackTimeoutMs, options.backoffMinMs,
                 options.backoffMaxMs, new SenderReports()).start();
         loop = new Thread(this::solveLoop, "engine-solve");
@@ -98,11 +101,45 @@ public final class Engine implements AutoCloseable {
         }
     }
 
+    /** The broker has replayed its cache of our prefixes (first epoch), or restarted (later ones). */
+    private void onBrokerSync(String epoch, boolean first) {
+        if (first) {
+            replayed.countDown();
+        } else {
+            LOG.info("engine: broker restarted (epoch " + epoch + "), inputs replayed");
+        }
+    }
+
+    /**
+     * Before the first decision, waits for the broker's replay of the current inputs (bounded by
+     * the settle time): a decision from the initial values would move a robot that is, say,
+     * charging, until the replay of {@code power_autonomy} corrects it a moment later.
+     */
+    private void awaitReplay() throws InterruptedException {
+        if (replayed.await(options.settleMs, TimeUnit.MILLISECONDS)) {
+            LOG.info("engine: inputs replayed by the broker, first solve");
+        } else {
+            LOG.info("engine: no broker replay within " + options.settleMs + " ms, first solve from what arrived");
+        }
+    }
+
     private void solveLoop() {
+        try {
+            awaitReplay();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return;
+        }
         long seen = 0;
+        SolveRetry retry = new SolveRetry(options.solveRetryMinMs, options.solveRetryMaxMs);
         while (running) {
             try {
-                InputState.Snapshot snap = state.awaitChange(seen, 200);
+                InputState.Snapshot snap = state.awaitChange(seen, retry.waitMs(200));
+                if (snap == null && retry.due()) {
+                    snap = state.snapshot(); // same inputs, the last solve failed: try again
+                    status.count("solveRetries");
+                    LOG.info("retrying the failed solve on unchanged inputs");
+                }
                 if (snap == null) {
                     heartbeat();
                     continue;
@@ -111,6 +148,7 @@ public final class Engine implements AutoCloseable {
                 SolveResult r = backend.solve(snap.params());
                 if (running) {
                     handle(r, snap);
+                    retry.after(r);
                 }
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
@@ -182,7 +220,7 @@ public final class Engine implements AutoCloseable {
         entry.put("optimal", r.optimal());
         entry.set("decisions", decisions);
         entry.set("changed", changed);
-        bus.publish(Topics.DECISION, Json.write(entry));
+        bus.publishRetained(Topics.DECISION, Topics.DECISION, Json.write(entry));
     }
 
     private void send(VarPoint vp, JsonNode value) {
@@ -194,7 +232,7 @@ public final class Engine implements AutoCloseable {
             msg.put("seq", seq);
             msg.put("time", System.currentTimeMillis());
             String prefix = type.equals("bt") ? Topics.VARIANT_PREFIX : Topics.BLACKBOARD_PREFIX;
-            bus.publish(prefix + vp.name(), Json.write(msg));
+            bus.publishRetained(prefix + vp.name(), prefix + vp.name(), Json.write(msg));
         } else if (type.equals("arch")) {
             sender.submit(vp.name(), ParameterSender.changeParameter(vp.binding(), value));
         }
@@ -202,7 +240,7 @@ public final class Engine implements AutoCloseable {
 
     private void publishStatus() {
         lastStatusNanos = System.nanoTime();
-        bus.publish(Topics.STATUS, Json.write(status.toJson(appliedValues)));
+        bus.publishRetained(Topics.STATUS, Topics.STATUS, Json.write(status.toJson(appliedValues)));
     }
 
     /** A quiet engine still shows it is alive. */

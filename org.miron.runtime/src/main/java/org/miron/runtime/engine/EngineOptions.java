@@ -20,6 +20,14 @@ public final class EngineOptions {
     public long backoffMaxMs = 5000;
     /** miron.status is also re-published this often when nothing happens (a heartbeat). */
     public long statusIntervalMs = 5000;
+    /** After a solver timeout or crash the same inputs are solved again after this delay, doubling up to the max. */
+    public long solveRetryMinMs = 500;
+    public long solveRetryMaxMs = 10_000;
+    /**
+     * Longest wait for the broker's last-value replay before the first solve (settle time); the
+     * replay normally completes within milliseconds, this only bounds the wait without a broker.
+     */
+    public long settleMs = 1000;
 
     public EngineOptions(Path ioJson) {
         this.ioJson = ioJson;

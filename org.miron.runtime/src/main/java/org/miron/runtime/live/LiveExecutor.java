@@ -15,6 +15,7 @@ import org.miron.runtime.executor.TreeBuilder;
 import org.miron.runtime.executor.TreeContext;
 import org.miron.runtime.executor.VariantActionNode;
 import org.miron.runtime.executor.VariantSource;
+import org.miron.runtime.skill.SkillDeadlines;
 import org.miron.runtime.skill.ZmqSkillClient;
 
 /**
@@ -28,6 +29,7 @@ public final class LiveExecutor implements AutoCloseable {
     private final ActionRegistry registry = new ActionRegistry();
     private final VariantSource variants = new VariantSource();
     private final VariantSource blackboard = new VariantSource();
+    private SkillDeadlines deadlines = SkillDeadlines.defaults();
     private ZmqSkillClient skills;
     private DecisionFeed feed;
     private Tree tree;
@@ -41,9 +43,15 @@ public final class LiveExecutor implements AutoCloseable {
         return registry;
     }
 
+    /** Result deadlines of pushed skills (see {@link ZmqSkillClient}); set before {@link #build}. */
+    public LiveExecutor skillDeadlines(SkillDeadlines deadlines) {
+        this.deadlines = deadlines;
+        return this;
+    }
+
     /** Loads and checks the tree and connects to the bus and the skill interface. */
     public LiveExecutor build(Path treeFile, StatusListener trace) {
-        skills = new ZmqSkillClient(endpoints.request(), endpoints.skillEvents(), 2000);
+        skills = new ZmqSkillClient(endpoints.request(), endpoints.skillEvents(), 2000, deadlines);
         registry.registerVariantAction(variants).setFallback(new SkillActionStrategy(skills));
         tree = new TreeBuilder(registry, new TreeContext()).build(treeFile);
         if (trace != null) {

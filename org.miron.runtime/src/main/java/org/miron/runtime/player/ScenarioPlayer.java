@@ -49,7 +49,9 @@ public final class ScenarioPlayer implements AutoCloseable {
             if (!body.has("time")) {
                 body.put("time", System.currentTimeMillis());
             }
-            bus.publish(step.topic(), Json.write(body));
+            // retained per subject: re-announced to a restarted broker, whose cache starts empty
+            bus.publishRetained(step.topic() + "\0" + body.path("namespace").asText("") + "\0"
+                    + body.path("name").asText(""), step.topic(), Json.write(body));
             LOG.info("played " + step.topic() + " " + body);
             played++;
         }

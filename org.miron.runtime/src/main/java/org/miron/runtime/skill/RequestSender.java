@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
 import org.miron.runtime.Json;
+import org.miron.runtime.LinkMonitor;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -20,6 +21,13 @@ import org.zeromq.ZMsg;
  * frame); without it the socket is dropped (stale replies go with it, "lazy pirate") and the
  * request is retried after an exponential back-off. Used for change-parameter queries (engine) and
  * push-skill / abort-current-skill requests (BT executor).
+ *
+ * <p>The ack timeout measures the far side only: the socket is connected when the sender starts
+ * (and again right after dropping one), and a request is sent only once its link is up
+ * ({@link LinkMonitor}). Before, the first request rode a socket created for it, so its 1 s ack
+ * timeout also paid for the connection set-up; when JeroMQ's handshake stalled (see
+ * {@link Connect}) or the broker was not listening yet, the ack came too late, the socket was
+ * dropped with the request and it was retried 1.2 s later (ack timeout + first back-off).
  *
  * <p>The socket is a DEALER speaking REQ's envelope (empty delimiter, then the body), so a lost
  * reply cannot wedge a REQ state machine; the broker's ROUTER sees an ordinary REQ client.
@@ -67,6 +75,11 @@ public final class RequestSender implements AutoCloseable {
         notifyAll();
     }
 
+    /** Forgets the request for {@code key} unless it is acknowledged already (then there is nothing to forget). */
+    public synchronized void cancel(String key) {
+        pending.remove(key);
+    }
+
     private synchronized Map.Entry<String, ObjectNode> next() throws InterruptedException {
         while (running && pending.isEmpty()) {
             wait(200);
@@ -88,7 +101,9 @@ public final class RequestSender implements AutoCloseable {
     }
 
     private void loop() {
-        ZMQ.Socket socket = null;
+        ZMQ.Socket socket = connect();
+        LinkMonitor link = new LinkMonitor(ctx, socket);
+        Connect.connect(socket, endpoint);
         long backoff = backoffMinMs;
         int attempt = 0;
         try {
@@ -97,8 +112,8 @@ public final class RequestSender implements AutoCloseable {
                 if (e == null) {
                     break;
                 }
-                if (socket == null) {
-                    socket = connect();
+                if (!link.awaitUp(200)) {
+                    continue; // not connected yet: nothing is lost, take the newest request again
                 }
                 ObjectNode message = e.getValue();
                 socket.sendMore(new byte[0]);
@@ -110,8 +125,11 @@ public final class RequestSender implements AutoCloseable {
                     backoff = backoffMinMs;
                     attempt = 0;
                 } else {
+                    link.close();
                     socket.close(); // drops a late reply with the socket
-                    socket = null;
+                    socket = connect(); // connects during the back-off
+                    link = new LinkMonitor(ctx, socket);
+                    Connect.connect(socket, endpoint);
                     attempt++;
                     listener.retry(e.getKey(), message, attempt, backoff);
                     sleepBackoff(backoff);
@@ -125,6 +143,7 @@ public final class RequestSender implements AutoCloseable {
                 LOG.severe(thread.getName() + " stopped: " + e);
             }
         } finally {
+            link.close();
             ctx.close();
         }
     }
@@ -132,7 +151,6 @@ public final class RequestSender implements AutoCloseable {
     private ZMQ.Socket connect() {
         ZMQ.Socket s = ctx.createSocket(SocketType.DEALER);
         s.setLinger(0);
-        Connect.connect(s, endpoint);
         return s;
     }
 

@@ -2,6 +2,7 @@ package org.miron.runtime.broker;
 
 import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
@@ -47,7 +48,7 @@ public class BrokerTest {
         pub.publish("miron.variant.mode", "{\"value\":\"fast\",\"seq\":2}");
         pub.publish("miron.status", "{\"state\":\"ok\"}");
         assertTrue(pub.flush(TIMEOUT));
-        awaitCached(3);
+        awaitCached(3 + 1); // and the broker's own miron.broker.hello
         try (BusProbe late = new BusProbe(ep.busOut(), "miron.variant.")) {
             JsonNode task = late.await("miron.variant.task", b -> true, TIMEOUT);
             JsonNode mode = late.await("miron.variant.mode", b -> true, TIMEOUT);
@@ -116,6 +117,22 @@ public class BrokerTest {
         }
     }
 
+    @Test
+    public void brokenCacheFileIsAClearError() throws Exception {
+        java.nio.file.Path file = java.nio.file.Files.createTempFile("miron-cache", ".json");
+        try {
+            java.nio.file.Files.writeString(file, "[[\"cm9xbWUuZXN0aW1hdGU=\"]] trailing");
+            try (Broker other = new Broker(Ports.endpoints(), file)) {
+                other.start();
+                throw new AssertionError("broker started on a broken cache file");
+            } catch (IllegalStateException e) {
+                assertTrue(e.getMessage(), e.getMessage().contains("cannot load its cache file"));
+            }
+        } finally {
+            java.nio.file.Files.deleteIfExists(file);
+        }
+    }
+
     private void awaitCached(int topics) throws InterruptedException {
         long end = System.currentTimeMillis() + TIMEOUT;
         while (broker.cachedTopics() < topics && System.currentTimeMillis() < end) {
@@ -130,9 +147,9 @@ public class BrokerTest {
         cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"safety\",\"value\":0.1}".getBytes()));
         cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"power\",\"value\":0.2}".getBytes()));
         cache.put(List.of("roqme.estimate".getBytes(), "{\"name\":\"safety\",\"value\":0.3}".getBytes()));
-        cache.put(List.of("roqme.estimate".getBytes(), "not json".getBytes()));
+        assertFalse("invalid messages are not cached", cache.put(List.of("roqme.estimate".getBytes(), "not json".getBytes())));
         List<List<byte[]>> all = cache.matching("roqme.".getBytes());
-        assertEquals(3, all.size());
+        assertEquals(2, all.size());
         assertEquals("{\"name\":\"power\",\"value\":0.2}", new String(all.get(0).get(1)));
         assertEquals("{\"name\":\"safety\",\"value\":0.3}", new String(all.get(1).get(1)));
         assertTrue(cache.matching("roqme.estimateX".getBytes()).isEmpty());

@@ -18,7 +18,8 @@ import org.miron.runtime.bus.Topics;
  * contexts with malformed, unknown and mistyped messages mixed in. It checks what "runs for hours"
  * means: no decision lost on the bus (consecutive seq), the decision log complete, bad input
  * counted, the engine alive, the last inputs decided and applied, and prints throughput and heap.
- * A benchmark, not a unit test: nothing here is timed against a target.
+ * A benchmark, not a unit test: nothing here is timed against a target. With a second argument
+ * {@code faults} it runs {@link FaultSoak} instead.
  */
 public final class EngineSoak {
     private EngineSoak() {
@@ -26,6 +27,11 @@ public final class EngineSoak {
 
     public static void main(String[] args) throws Exception {
         double minutes = args.length > 0 ? Double.parseDouble(args[0]) : 1.0;
+        if (args.length > 1 && args[1].equals("faults")) {
+            boolean ok = FaultSoak.run(minutes);
+            System.out.println(ok ? "soak faults: OK" : "soak faults: FAILED");
+            System.exit(ok ? 0 : 1);
+        }
         Logger.getLogger("").setLevel(Level.SEVERE); // bad input is logged per message: thousands of lines
         Path dir = Files.createTempDirectory("miron-soak");
         Random random = new Random(42);
