@@ -96,7 +96,8 @@ public class CodeActionLspTest {
         String uri = client.open(workspace.resolve("intralogistics.miron"), text);
         Diagnostic missing = client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> "roqme.missing-import".equals(code(d))))
                 .stream().filter(d -> "roqme.missing-import".equals(code(d))).findFirst().get();
-        String importLine = org.miron.bt.ide.codeactions.IssueDataAccess.first(missing.getData());
+        // The issue data: the import line to add, then the reference as written with it.
+        String importLine = ((com.google.gson.JsonArray) missing.getData()).get(0).getAsString();
         String fixed = fix("intralogistics.miron", text, "roqme.missing-import", "Add " + importLine);
         assertTrue(fixed, fixed.contains(importLine + "\n"));
         assertTrue(fixed, fixed.indexOf(importLine) < fixed.indexOf("@varpoint"));

@@ -1,6 +1,7 @@
 package org.miron.ide.server;
 
 import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import java.nio.file.Files;
@@ -18,6 +19,7 @@ import org.eclipse.lsp4j.HoverParams;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.ReferenceContext;
 import org.eclipse.lsp4j.ReferenceParams;
+import org.eclipse.lsp4j.SemanticTokensParams;
 import org.eclipse.lsp4j.SymbolInformation;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
@@ -98,6 +100,15 @@ public class NavigationLspTest {
         List<String> names = symbols.stream().map(s -> s.isLeft() ? s.getLeft().getName() : s.getRight().getName())
                 .collect(Collectors.toList());
         assertTrue(names.toString(), names.containsAll(List.of("task", "maxVelocity", "noBattery")));
+    }
+
+    @Test
+    public void semanticTokensOfABehaviourTreeWithTreeNodesModel() throws Exception {
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btUri = client.open(bt, Files.readString(bt));
+        client.awaitDiagnostics(btUri, d -> true);
+        assertNotNull(client.server().getTextDocumentService()
+                .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(btUri))).get(60, TimeUnit.SECONDS));
     }
 
     @Test
