@@ -79,6 +79,33 @@ public class IntralogisticsLspTest {
     }
 
     @Test
+    public void editingTheImportedTreeBufferRevalidatesTheMiron() throws Exception {
+        String mironUri = client.open(miron);
+        client.awaitDiagnostics(mironUri, d -> !hasErrors(d));
+        String btText = Files.readString(bt);
+        String btUri = client.open(bt, btText);
+        client.change(btUri, btText.replace("<BehaviorTree ID=\"DeliverCharge\">", "<BehaviorTree ID=\"DeliverAndCharge\">"));
+        List<Diagnostic> broken = client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
+        assertTrue(broken.toString(), broken.stream().anyMatch(d -> LspClient.message(d).contains("DeliverCharge")));
+        client.change(btUri, btText);
+        client.awaitDiagnostics(mironUri, d -> !hasErrors(d));
+    }
+
+    @Test
+    public void hoverOnAnImportedTreeShowsItsXmlComment() throws Exception {
+        String btText = Files.readString(bt).replace("<BehaviorTree ID=\"Charge\">",
+                "<!-- Drives to the dock and charges. -->\n  <BehaviorTree ID=\"Charge\">");
+        client.awaitDiagnostics(client.open(bt, btText), d -> true);
+        String text = Files.readString(miron);
+        String uri = client.open(miron, text);
+        client.awaitDiagnostics(uri, d -> !hasErrors(d));
+        org.eclipse.lsp4j.Hover hover = client.server().getTextDocumentService()
+                .hover(new org.eclipse.lsp4j.HoverParams(new TextDocumentIdentifier(uri), positionAfter(text, "dock : main.Cha")))
+                .get(60, TimeUnit.SECONDS);
+        assertTrue(String.valueOf(hover), hover.getContents().getRight().getValue().contains("Drives to the dock and charges."));
+    }
+
+    @Test
     public void completionAfterTheAliasOffersTheImportedTrees() throws Exception {
         String uri = client.open(miron);
         client.awaitDiagnostics(uri, d -> true);
