@@ -1,13 +1,13 @@
 package org.miron.bt.ide;
 
-import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
-import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.LexerIdeBindings;
-import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.eclipse.xtext.ide.editor.contentassist.CompletionPrefixProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.antlr.internal.Lexer;
+import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.eclipse.xtext.ide.server.hover.IHoverService;
+import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
 import org.miron.bt.ide.hover.BtDocumentationProvider;

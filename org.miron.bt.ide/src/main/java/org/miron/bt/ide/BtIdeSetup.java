@@ -3,11 +3,12 @@
  */
 package org.miron.bt.ide;
 
-import com.google.inject.Guice;
-import com.google.inject.Injector;
 import org.eclipse.xtext.util.Modules2;
 import org.miron.bt.BtRuntimeModule;
 import org.miron.bt.BtStandaloneSetup;
+
+import com.google.inject.Guice;
+import com.google.inject.Injector;
 
 /**
  * Initialization support for running Xtext languages as language servers.

@@ -1,11 +1,11 @@
 package org.miron.dsl.ide;
 
-import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
-import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeCrossrefProposalProvider;
+import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
 import org.eclipse.xtext.service.AbstractGenericModule;
+import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.dsl.ide.contentassist.DslCrossrefProposalProvider;
 import org.miron.dsl.ide.contentassist.DslProposalProvider;
 import org.miron.dsl.ide.hover.DslDocumentationProvider;

@@ -3,11 +3,12 @@
  */
 package org.miron.dsl.ide;
 
-import com.google.inject.Guice;
-import com.google.inject.Injector;
 import org.eclipse.xtext.util.Modules2;
 import org.miron.dsl.RoqmeRuntimeModule;
 import org.miron.dsl.RoqmeStandaloneSetup;
+
+import com.google.inject.Guice;
+import com.google.inject.Injector;
 
 /**
  * Initialization support for running Xtext languages as language servers.

@@ -1,13 +1,13 @@
 package org.miron.ide.server;
 
 import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.xtext.Constants;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceFactory;
-import org.eclipse.xtext.Constants;
+import org.eclipse.xtext.util.Modules2;
 import org.miron.bt.BtRuntimeModule;
 import org.miron.bt.ide.BtIdeModule;
 import org.miron.bt.ide.BtIdeSetup;
-import com.google.inject.name.Names;
 import org.miron.dsl.MironRuntimeModule;
 import org.miron.dsl.ide.MironIdeModule;
 import org.miron.dsl.ide.MironIdeSetup;
@@ -17,10 +17,11 @@ import com.google.inject.Guice;
 import com.google.inject.Injector;
 import com.google.inject.Provider;
 import com.google.inject.Singleton;
-import org.eclipse.xtext.util.Modules2;
+import com.google.inject.name.Names;
 
 /**
- * The languages the server knows, by file extension: .bt and woven .xml trees (as `miron check`),
+ * The languages the server knows, by file extension: .bt and BehaviorTree.CPP .xml trees (see
+ * {@link LanguageRegistry}),
  * .roqme and .miron. Set up in this order because each standalone set-up also registers the
  * languages it imports with their runtime-only injectors: the ide injectors must be the last ones
  * in EMF's global registries, which the server's resource sets use to load imported files.
