@@ -21,10 +21,10 @@ import com.google.inject.name.Names;
 
 /**
  * The languages the server knows, by file extension: .bt and BehaviorTree.CPP .xml trees (see
- * {@link LanguageRegistry}),
- * .roqme and .miron. Set up in this order because each standalone set-up also registers the
- * languages it imports with their runtime-only injectors: the ide injectors must be the last ones
- * in EMF's global registries, which the server's resource sets use to load imported files.
+ * {@link LanguageRegistry}), .roqme and .miron. Set up in this order because each standalone
+ * set-up also registers the languages it imports with their runtime-only injectors: the ide
+ * injectors must be the last ones in EMF's global registries, which the server's resource sets
+ * use to load imported files.
  */
 @Singleton
 public class MironLanguages implements Provider<IResourceServiceProvider.Registry> {
