@@ -1,13 +1,8 @@
 package org.miron.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.stream.Stream;
-
 
 import picocli.CommandLine;
 
@@ -31,23 +26,5 @@ final class Cli {
 
     static int exit(String... args) {
         return new Cli().run(args);
-    }
-
-    /** Copies a folder of test resources (src/test/resources/NAME) to dir. */
-    static Path copyResources(String name, Path dir) {
-        Path from = ROOT.resolve("org.miron.generator/src/test/resources").resolve(name);
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path file : (Iterable<Path>) files::iterator) {
-                Path to = dir.resolve(from.relativize(file).toString());
-                if (Files.isDirectory(file)) {
-                    Files.createDirectories(to);
-                } else {
-                    Files.copy(file, to);
-                }
-            }
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return dir;
     }
 }

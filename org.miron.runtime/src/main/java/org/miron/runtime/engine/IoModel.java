@@ -8,10 +8,14 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
+import java.util.function.Supplier;
+import java.util.regex.Pattern;
 import org.miron.runtime.Json;
 
 /** The generated {@code name.io.json} (docs/io-json.md), with the .mzn/.dzn paths resolved. */
 public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, List<VarPoint> varpoints) {
+    private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
+    private static final List<String> ROQME_TYPES = List.of("boolean", "event", "enum", "number");
 
     /** Reads and validates the file; any problem is an {@link IllegalArgumentException} naming it. */
     public static IoModel load(Path ioJson) {
@@ -46,12 +50,15 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
             throw new IllegalArgumentException("data file not found: " + dzn);
         }
         List<InputSpec> inputs = new ArrayList<>();
-        for (JsonNode in : root.path("inputs")) {
-            inputs.add(input(in));
+        JsonNode inputNodes = array(root, "inputs");
+        for (int i = 0; i < inputNodes.size(); i++) {
+            JsonNode in = inputNodes.get(i);
+            inputs.add(within("inputs[" + i + "]", () -> input(in)));
         }
         List<VarPoint> vps = new ArrayList<>();
-        for (JsonNode vp : root.path("varpoints")) {
-            vps.add(varpoint(vp));
+        JsonNode varpointNodes = array(root, "varpoints");
+        for (int i = 0; i < varpointNodes.size(); i++) {
+            vps.add(varpoint(varpointNodes.get(i), "varpoints[" + i + "]"));
         }
         String model = optional(root, "model");
         return new IoModel(model == null ? "model" : model, mzn, dzn, List.copyOf(inputs), List.copyOf(vps));
@@ -62,22 +69,33 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         if (!kind.equals("metric") && !kind.equals("context")) {
             throw new IllegalArgumentException("input kind '" + kind + "' is neither metric nor context");
         }
-        String type = required(in, "type");
-        if (!List.of("float", "bool", "int").contains(type)) {
-            throw new IllegalArgumentException("input " + in.path("name").asText() + " has type " + type);
-        }
-        List<String> literals = new ArrayList<>();
-        in.path("literals").forEach(l -> literals.add(l.asText()));
-        String roqmeType = kind.equals("context") ? required(in, "roqmeType") : null;
-        String known = kind.equals("context") ? required(in, "known") : null;
-        double initial = in.hasNonNull("initial") ? in.get("initial").asDouble() : 0.5;
+        boolean metric = kind.equals("metric");
+        String type = oneOf(in, "type", metric ? List.of("float") : List.of("float", "bool", "int"));
+        String roqmeType = metric ? null : oneOf(in, "roqmeType", ROQME_TYPES);
+        List<String> literals = "enum".equals(roqmeType) ? literals(in) : List.of();
+        String known = metric ? null : identifier(in, "known");
+        double initial = metric ? initial(in) : 0.5;
         String ns = in.path("namespace").asText("");
-        return new InputSpec(kind, ns, required(in, "name"), roqmeType, Collections.unmodifiableList(literals),
-                required(in, "param"), type, known, initial);
+        return new InputSpec(kind, ns, required(in, "name"), roqmeType, literals,
+                identifier(in, "param"), type, known, initial);
     }
 
-    private static VarPoint varpoint(JsonNode vp) {
-        String name = required(vp, "name");
+    private static VarPoint varpoint(JsonNode vp, String at) {
+        Binding binding = within(at + ".binding", () -> binding(vp.get("binding")));
+        return within(at, () -> varpoint(vp, binding));
+    }
+
+    /** Runs {@code parse}; a problem it finds is reported at {@code at} (a path in the file). */
+    private static <T> T within(String at, Supplier<T> parse) {
+        try {
+            return parse.get();
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(at + ": " + e.getMessage(), e);
+        }
+    }
+
+    private static VarPoint varpoint(JsonNode vp, Binding binding) {
+        String name = identifier(vp, "name");
         List<JsonNode> values = new ArrayList<>();
         vp.path("values").forEach(values::add);
         if (values.isEmpty()) {
@@ -93,14 +111,106 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
                 throw new IllegalArgumentException("varpoint " + name + " (" + kind + ") has value " + v);
             }
         }
-        Integer preset = vp.hasNonNull("preset") ? vp.get("preset").asInt() : null;
+        Integer preset = preset(vp);
         if (preset != null && (preset < 0 || preset >= values.size())) {
             throw new IllegalArgumentException("varpoint " + name + " has preset " + preset + " outside its values");
         }
-        JsonNode b = vp.get("binding");
-        Binding binding = b == null || b.isNull() ? null : new Binding(required(b, "type"), b);
-        return new VarPoint(name, kind, List.copyOf(values), preset, required(vp, "decision"),
-                required(vp, "input"), required(vp, "inputValue"), required(vp, "current"), binding);
+        return new VarPoint(name, kind, List.copyOf(values), preset, identifier(vp, "decision"),
+                identifier(vp, "input"), identifier(vp, "inputValue"), identifier(vp, "current"), binding);
+    }
+
+    /** The binding with the fields applying it needs: {@code variable} (bt, btport), the query's four (arch). */
+    private static Binding binding(JsonNode b) {
+        if (b == null || b.isNull()) {
+            return null;
+        }
+        String type = oneOf(b, "type", List.of("bt", "arch", "btport"));
+        if (type.equals("arch")) {
+            for (String field : List.of("parameterSetRepository", "parameterSet", "component", "parameter")) {
+                if (b.get(field) == null || !b.get(field).isTextual()) {
+                    throw new IllegalArgumentException("missing field '" + field + "' (a string, may be empty)");
+                }
+            }
+        } else {
+            required(b, "variable");
+        }
+        return new Binding(type, b);
+    }
+
+    /** A required top-level array ({@code inputs}, {@code varpoints}). */
+    private static JsonNode array(JsonNode root, String field) {
+        JsonNode n = root.get(field);
+        if (n == null || n.isNull()) {
+            throw new IllegalArgumentException("missing field '" + field + "' (an array)");
+        }
+        if (!n.isArray()) {
+            throw new IllegalArgumentException("field '" + field + "' is " + n.getNodeType().toString().toLowerCase()
+                    + ", not an array");
+        }
+        return n;
+    }
+
+    /** The literals of an enum context: a non-empty array of names. */
+    private static List<String> literals(JsonNode in) {
+        JsonNode n = in.get("literals");
+        if (n == null || !n.isArray() || n.isEmpty()) {
+            throw new IllegalArgumentException("missing field 'literals' (an enum context needs a non-empty array)");
+        }
+        List<String> literals = new ArrayList<>();
+        for (JsonNode l : n) {
+            if (!l.isTextual() || l.asText().isEmpty()) {
+                throw new IllegalArgumentException("field 'literals' has " + l + ", not a name");
+            }
+            literals.add(l.asText());
+        }
+        return Collections.unmodifiableList(literals);
+    }
+
+    /** A metric's start value: a number in [0,1], 0.5 when absent. */
+    private static double initial(JsonNode in) {
+        JsonNode n = in.get("initial");
+        if (n == null || n.isNull()) {
+            return 0.5;
+        }
+        if (!n.isNumber() || !(n.asDouble() >= 0 && n.asDouble() <= 1)) {
+            throw new IllegalArgumentException("field 'initial' is " + n + ", not a number in [0,1]");
+        }
+        return n.asDouble();
+    }
+
+    /** A varpoint's preset: a whole number (range checked by the caller), or null. */
+    private static Integer preset(JsonNode vp) {
+        JsonNode n = vp.get("preset");
+        if (n == null || n.isNull()) {
+            return null;
+        }
+        double d = n.asDouble();
+        if (!n.isNumber() || d != Math.rint(d) || Math.abs(d) > Integer.MAX_VALUE) {
+            throw new IllegalArgumentException("field 'preset' is " + n + ", not a 0-based index into 'values'");
+        }
+        return (int) d;
+    }
+
+    /** A required text field that must be one of {@code allowed}. */
+    private static String oneOf(JsonNode node, String field, List<String> allowed) {
+        String value = required(node, field);
+        if (!allowed.contains(value)) {
+            String last = allowed.get(allowed.size() - 1);
+            String expected = allowed.size() == 1 ? last
+                    : String.join(", ", allowed.subList(0, allowed.size() - 1)) + " or " + last;
+            throw new IllegalArgumentException("field '" + field + "' is '" + value + "', expected " + expected);
+        }
+        return value;
+    }
+
+    /** A required MiniZinc parameter or variable name. */
+    private static String identifier(JsonNode node, String field) {
+        String value = required(node, field);
+        if (!IDENTIFIER.matcher(value).matches()) {
+            throw new IllegalArgumentException("field '" + field + "' is '" + value
+                    + "', not a MiniZinc identifier ([A-Za-z][A-Za-z0-9_]*)");
+        }
+        return value;
     }
 
     public Optional<VarPoint> varpoint(String name) {

@@ -16,6 +16,7 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -103,5 +104,59 @@ public class IoContractTest {
                 // refused, with the file named
             }
         }
+    }
+
+    /**
+     * Files breaking the schema that the engine once loaded anyway (and then misbehaved on): each
+     * is refused, and the message names the file and where in it the problem is.
+     */
+    @Test
+    public void schemaBreakingFilesAreRefusedNamingTheField() throws IOException {
+        Path good = copy("testbot");
+        ObjectNode original = (ObjectNode) MAPPER.readTree(good.toFile());
+        Map<String, Consumer<ObjectNode>> breakages = new LinkedHashMap<>();
+        Map<String, String> named = new LinkedHashMap<>();
+        breakages.put("unknown binding type", io -> ((ObjectNode) varpoint(io, 0).get("binding")).put("type", "plugin"));
+        named.put("unknown binding type", "varpoints[0].binding: field 'type'");
+        breakages.put("bt binding without variable", io -> ((ObjectNode) varpoint(io, 0).get("binding")).remove("variable"));
+        named.put("bt binding without variable", "varpoints[0].binding: missing field 'variable'");
+        breakages.put("arch binding without parameter", io -> ((ObjectNode) varpoint(io, 1).get("binding")).remove("parameter"));
+        named.put("arch binding without parameter", "varpoints[1].binding: missing field 'parameter'");
+        breakages.put("no inputs", io -> io.remove("inputs"));
+        named.put("no inputs", "missing field 'inputs'");
+        breakages.put("no varpoints", io -> io.remove("varpoints"));
+        named.put("no varpoints", "missing field 'varpoints'");
+        breakages.put("inputs as an object", io -> io.putObject("inputs").set("0", original.get("inputs").get(0).deepCopy()));
+        named.put("inputs as an object", "field 'inputs'");
+        breakages.put("enum context without literals", io -> ((ObjectNode) io.get("inputs").get(3)).remove("literals"));
+        named.put("enum context without literals", "inputs[3]: missing field 'literals'");
+        breakages.put("unknown roqmeType", io -> ((ObjectNode) io.get("inputs").get(2)).put("roqmeType", "colour"));
+        named.put("unknown roqmeType", "inputs[2]: field 'roqmeType'");
+        breakages.put("fractional preset", io -> varpoint(io, 0).put("preset", 1.5));
+        named.put("fractional preset", "varpoints[0]: field 'preset'");
+        breakages.put("int metric", io -> ((ObjectNode) io.get("inputs").get(0)).put("type", "int"));
+        named.put("int metric", "inputs[0]: field 'type'");
+        breakages.put("initial outside [0,1]", io -> ((ObjectNode) io.get("inputs").get(0)).put("initial", 2));
+        named.put("initial outside [0,1]", "inputs[0]: field 'initial'");
+        breakages.put("decision not an identifier", io -> varpoint(io, 0).put("decision", "task-var"));
+        named.put("decision not an identifier", "varpoints[0]: field 'decision'");
+        Path bad = tmp.getRoot().toPath().resolve("bad.io.json");
+        List<String> wrong = new ArrayList<>();
+        for (Map.Entry<String, Consumer<ObjectNode>> breakage : breakages.entrySet()) {
+            String name = breakage.getKey();
+            ObjectNode broken = original.deepCopy();
+            breakage.getValue().accept(broken);
+            assertFalse(name + " passed the schema", problems(broken).isEmpty());
+            Files.writeString(bad, MAPPER.writeValueAsString(broken));
+            try {
+                IoModel.load(bad);
+                wrong.add(name + ": the engine loaded a file breaking the contract");
+            } catch (IllegalArgumentException e) {
+                if (!e.getMessage().startsWith(bad + ": ") || !e.getMessage().contains(named.get(name))) {
+                    wrong.add(name + ": message does not name the file and '" + named.get(name) + "': " + e.getMessage());
+                }
+            }
+        }
+        assertEquals(String.join("\n", wrong), List.of(), wrong);
     }
 }
