@@ -95,6 +95,9 @@ public class CompletionLspTest {
         List<String> repeat = complete("intralogistics.bt", text.replace(drop, "<Repeat num_cycles=\"2\" ></Repeat>"),
                 "<Repeat num_cycles=\"2\" ");
         assertFalse(repeat.toString(), repeat.contains("num_cycles"));
+        assertHas(complete("intralogistics.bt", text.replace("main_tree_to_execute=\"Main\"", "main_tree_to_execute=\"\""),
+                "main_tree_to_execute=\""), "Main", "Charge");
+        assertHas(complete("intralogistics.bt", text, "__shared_blackboard=\""), "true", "false");
     }
 
     @Test

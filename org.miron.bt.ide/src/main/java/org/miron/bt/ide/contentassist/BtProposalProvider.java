@@ -22,7 +22,8 @@ import org.miron.bt.util.BtTrees;
 /**
  * BT completion: the grammar's keywords (built-in element names) plus, read from the text around
  * the caret, node IDs declared in {@code <TreeNodesModel>} (here and in included files), SubTree
- * IDs, and the attribute names of known nodes (declared ports, built-ins' parameters).
+ * and main tree IDs, the attribute names of known nodes (declared ports, built-ins' parameters)
+ * and the values of attributes with a fixed set of them.
  */
 public class BtProposalProvider extends IdeContentProposalProvider {
     private static final Set<String> EXPLICIT_FORMS = Set.of("Action", "Condition", "Control", "Decorator");
@@ -41,7 +42,7 @@ public class BtProposalProvider extends IdeContentProposalProvider {
         List<ContentAssistEntry> entries = switch (tag.kind()) {
             case ELEMENT_NAME -> elementNames(resource);
             case ATTRIBUTE_NAME -> attributeNames(resource, tag);
-            case ATTRIBUTE_VALUE -> "ID".equals(tag.attribute()) ? idValues(resource, tag) : List.of();
+            case ATTRIBUTE_VALUE -> attributeValues(resource, tag);
             case NONE -> List.of();
         };
         for (ContentAssistEntry entry : entries) {
@@ -76,6 +77,22 @@ public class BtProposalProvider extends IdeContentProposalProvider {
         }
         for (String tree : BtTrees.visibleTrees(resource).keySet()) {
             result.add(entry(tree, "BehaviorTree", ContentAssistEntry.KIND_MODULE, null));
+        }
+        return result;
+    }
+
+    private static List<ContentAssistEntry> attributeValues(XtextResource resource, TagContext tag) {
+        if ("ID".equals(tag.attribute())) {
+            return idValues(resource, tag);
+        }
+        List<ContentAssistEntry> result = new ArrayList<>();
+        if ("root".equals(tag.tag()) && "main_tree_to_execute".equals(tag.attribute())) {
+            for (String tree : BtTrees.visibleTrees(resource).keySet()) {
+                result.add(entry(tree, "BehaviorTree", ContentAssistEntry.KIND_REFERENCE, null));
+            }
+        }
+        for (String value : BuiltinAttributes.valuesOf(tag.attribute())) {
+            result.add(entry(value, tag.attribute(), ContentAssistEntry.KIND_VALUE, null));
         }
         return result;
     }

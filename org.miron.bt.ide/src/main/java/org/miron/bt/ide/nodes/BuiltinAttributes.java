@@ -38,7 +38,18 @@ public final class BuiltinAttributes {
             "Condition", "AlwaysSuccess", "AlwaysFailure", "SetBlackboard", "IfThenElse", "WhileDoElse", "Control",
             "KeepRunningUntilFailure", "Delay", "Decorator", "BehaviorTree", "include", "TreeNodesModel");
 
+    /** The values an attribute of a built-in can take, where they are a fixed set. */
+    private static final Map<String, List<String>> VALUES = Map.of(
+            "return_on_mismatch", List.of("SUCCESS", "FAILURE", "RUNNING"),
+            "__shared_blackboard", List.of("true", "false"),
+            "__autoremap", List.of("true", "false"));
+
     private BuiltinAttributes() {
+    }
+
+    /** The fixed values of an attribute, or an empty list. */
+    public static List<String> valuesOf(String attribute) {
+        return VALUES.getOrDefault(attribute, List.of());
     }
 
     /** Null for a tag that is not a built-in with known attributes. */
