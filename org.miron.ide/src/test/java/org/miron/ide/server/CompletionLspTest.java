@@ -65,9 +65,12 @@ public class CompletionLspTest {
         assertHas(complete("intralogistics.miron", text, "task = task::"), "task::dock", "task::pick");
         assertHas(complete("intralogistics.miron", text, "pickDeliverCharge : "), "preset", "main.Charge");
         assertHas(complete("intralogistics.miron", text, "10 affects roqme."), "roqme.safety", "roqme.mission_completion");
+        List<String> impact = complete("intralogistics.miron", text, "100 affects ");
+        assertHas(impact, "roqme", "roqme.safety");
+        assertFalse("main leads to no property: " + impact, impact.contains("main"));
         assertHas(complete("intralogistics.miron", text, "10 affects roqme.safety"), "++", "---");
         List<String> condition = complete("intralogistics.miron", text, "rule r2 : ");
-        assertHas(condition, "roqme.BatteryLevel", "roqme.safety", "roqme::AvailableSpace::HIGH", "maxVelocity", "avg");
+        assertHas(condition, "roqme", "roqme.BatteryLevel", "roqme.safety", "roqme::AvailableSpace::HIGH", "maxVelocity", "avg");
         assertHas(complete("intralogistics.miron", text, "} in main."), "main.PickDeliverChargeSubtree");
     }
 
