@@ -73,6 +73,23 @@ public class DiagnosticsLspTest {
     }
 
     @Test
+    public void anImportedFileDeletedAndCreatedOnDisk() throws Exception {
+        Path roqme = workspace.resolve("intralogistics.roqme");
+        Path moved = workspace.resolve("elsewhere.txt");
+        String mironUri = client.open(workspace.resolve("intralogistics.miron"));
+        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+        Files.move(roqme, moved);
+        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+                List.of(new FileEvent(LspClient.uri(roqme), FileChangeType.Deleted))));
+        client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
+
+        Files.move(moved, roqme);
+        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+                List.of(new FileEvent(LspClient.uri(roqme), FileChangeType.Created))));
+        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+    }
+
+    @Test
     public void aFileChangedOnDiskRevalidatesItsImporters() throws Exception {
         Path roqme = workspace.resolve("intralogistics.roqme");
         String mironUri = client.open(workspace.resolve("intralogistics.miron"));
