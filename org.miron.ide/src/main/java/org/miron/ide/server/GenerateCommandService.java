@@ -43,8 +43,13 @@ public class GenerateCommandService implements IExecutableCommandService {
             result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron file as first argument");
         } else {
             String output = arguments.size() > 1 ? text(arguments.get(1)) : null;
-            result = access.doSyncRead(uri, context -> generate((XtextResource) context.getResource(), output,
-                    cancelIndicator));
+            try {
+                result = access.doSyncRead(uri, context -> generate((XtextResource) context.getResource(), output,
+                        cancelIndicator));
+            } catch (RuntimeException unreadable) {
+                // A URI outside the workspace, or a file gone: an answer, not an internal error.
+                result = answer(List.of(), List.of(), "miron.generate: cannot read " + uri + ": " + unreadable);
+            }
         }
         if (access.getLanguageClient() != null) {
             boolean ok = Boolean.TRUE.equals(result.get("ok"));

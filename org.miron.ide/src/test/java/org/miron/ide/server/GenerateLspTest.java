@@ -74,5 +74,8 @@ public class GenerateLspTest {
         JsonObject result = generate("file:///nowhere/model.bt");
         assertFalse(result.get("ok").getAsBoolean());
         assertTrue(result.get("message").getAsString(), result.get("message").getAsString().contains(".miron"));
+        JsonObject missing = generate("file:///nowhere/model.miron");
+        assertFalse(missing.toString(), missing.get("ok").getAsBoolean());
+        assertFalse(generate().get("ok").getAsBoolean());
     }
 }
