@@ -1,5 +1,6 @@
 package org.miron.ide.server;
 
+import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
@@ -8,8 +9,11 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
+import org.eclipse.lsp4j.CompletionItem;
+import org.eclipse.lsp4j.CompletionList;
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
+import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
@@ -72,6 +76,26 @@ public class CompletionLspTest {
         List<String> condition = complete("intralogistics.miron", text, "rule r2 : ");
         assertHas(condition, "roqme", "roqme.BatteryLevel", "roqme.safety", "roqme::AvailableSpace::HIGH", "maxVelocity", "avg");
         assertHas(complete("intralogistics.miron", text, "} in main."), "main.PickDeliverChargeSubtree");
+    }
+
+    @Test
+    public void proposalsCarryTheDocumentationComment() throws Exception {
+        String text = example("intralogistics.miron");
+        Path path = workspace.resolve("intralogistics.miron");
+        String uri = client.open(path, text);
+        client.awaitDiagnostics(uri, d -> true);
+        try {
+            Either<List<CompletionItem>, CompletionList> result = client.server().getTextDocumentService()
+                    .completion(new CompletionParams(new TextDocumentIdentifier(uri),
+                            IntralogisticsLspTest.positionAfter(text, "10 affects roqme.")))
+                    .get(60, TimeUnit.SECONDS);
+            CompletionItem safety = result.getRight().getItems().stream().filter(i -> i.getLabel().equals("roqme.safety"))
+                    .findFirst().get();
+            assertEquals("Safety of the navigation around people and obstacles.", safety.getDocumentation().getLeft());
+        } finally {
+            client.server().getTextDocumentService().didClose(
+                    new org.eclipse.lsp4j.DidCloseTextDocumentParams(new TextDocumentIdentifier(uri)));
+        }
     }
 
     @Test

@@ -66,6 +66,13 @@ public class DslDocumentationProvider implements IEObjectDocumentationProvider {
         return text.toString();
     }
 
+    /** An element's documentation comment as plain text, or null. */
+    public static String plainDocumentation(EObject element) {
+        return element instanceof DocumentableElement documented && documented.getDocumentation() != null
+                ? comment(documented.getDocumentation())
+                : null;
+    }
+
     private static String comment(String documentation) {
         String text = documentation.strip();
         if (text.startsWith("/**") && text.endsWith("*/")) {
