@@ -19,15 +19,17 @@ import org.eclipse.lsp4j.HoverParams;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.ReferenceContext;
 import org.eclipse.lsp4j.ReferenceParams;
+import org.eclipse.lsp4j.RenameParams;
 import org.eclipse.lsp4j.SemanticTokensParams;
 import org.eclipse.lsp4j.SymbolInformation;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
+import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
 
-/** Hover, references, outline and folding across the intralogistics files. */
+/** Hover, references, rename, outline and folding across the intralogistics files. */
 public class NavigationLspTest {
     private static Path workspace;
     private static LspClient client;
@@ -91,6 +93,24 @@ public class NavigationLspTest {
         List<? extends Location> references = client.server().getTextDocumentService().references(params)
                 .get(60, TimeUnit.SECONDS);
         assertTrue(references.toString(), references.stream().anyMatch(l -> l.getUri().equals(mironUri)));
+    }
+
+    @Test
+    public void renameATreeFromTheMironEditsBothFiles() throws Exception {
+        String text = Files.readString(workspace.resolve("intralogistics.miron"));
+        String uri = client.open(workspace.resolve("intralogistics.miron"), text);
+        client.awaitDiagnostics(uri, d -> true);
+        WorkspaceEdit edit = client.server().getTextDocumentService().rename(new RenameParams(
+                new TextDocumentIdentifier(uri), IntralogisticsLspTest.positionAfter(text, "dock : main.Cha"), "Dock"))
+                .get(60, TimeUnit.SECONDS);
+        Path bt = workspace.resolve("intralogistics.bt");
+        String renamedTree = TextEdits.apply(Files.readString(bt), edit.getChanges().get(LspClient.uri(bt)));
+        assertTrue(renamedTree.contains("<BehaviorTree ID=\"Dock\">"));
+        assertFalse(renamedTree.contains("ID=\"Charge\""));
+        assertTrue(renamedTree.contains("<SubTreePlus ID=\"Dock\" name=\"charge_step\"/>"));
+        String renamedModel = TextEdits.apply(text, edit.getChanges().get(uri));
+        assertTrue(renamedModel.contains("dock : main.Dock,"));
+        // The edits are not applied: the shared workspace stays as it was for the other tests.
     }
 
     @Test
