@@ -112,6 +112,8 @@ public class CompletionLspTest {
         String drop = "<Action ID=\"objectdrop\" obj_index=\"-1\"/>";
         List<String> element = complete("intralogistics.bt", text.replace(drop, drop + "\n<"), drop + "\n<");
         assertHas(element, "Sequence", "RetryUntilSuccessful", "MoveTo", "objectpick", "GoTo");
+        assertEquals("GoTo is a tree and a declared SubTree: proposed once", 1,
+                element.stream().filter("GoTo"::equals).count());
         assertHas(complete("intralogistics.bt", text.replace(drop, drop + "\n<Action ID=\"\"/>"), "\n<Action ID=\""),
                 "MoveTo", "objectdrop");
         assertHas(complete("intralogistics.bt", text.replace(drop, drop + "\n<SubTree ID=\"\"/>"), "\n<SubTree ID=\""),

@@ -68,17 +68,18 @@ public class BtProposalProvider extends IdeContentProposalProvider {
 
     /** Built-ins, and compact forms: <MoveTo x="1"/> for a declared node, <GoTo/> for a tree. */
     private static List<ContentAssistEntry> elementNames(XtextResource resource) {
-        List<ContentAssistEntry> result = new ArrayList<>();
+        Map<String, ContentAssistEntry> result = new LinkedHashMap<>();
         for (String builtin : BuiltinAttributes.ELEMENTS) {
-            result.add(entry(builtin, "built-in", ContentAssistEntry.KIND_KEYWORD, null));
+            result.put(builtin, entry(builtin, "built-in", ContentAssistEntry.KIND_KEYWORD, null));
         }
         for (NodeDeclaration node : NodeDeclarations.visibleFrom(resource).values()) {
-            result.add(entry(node.id(), node.kind(), ContentAssistEntry.KIND_CLASS, portsText(node)));
+            result.putIfAbsent(node.id(), entry(node.id(), node.kind(), ContentAssistEntry.KIND_CLASS, portsText(node)));
         }
         for (String tree : BtTrees.visibleTrees(resource).keySet()) {
-            result.add(entry(tree, "BehaviorTree", ContentAssistEntry.KIND_MODULE, null));
+            // A tree also declared as a SubTree in TreeNodesModel keeps the declaration, with its ports.
+            result.putIfAbsent(tree, entry(tree, "BehaviorTree", ContentAssistEntry.KIND_MODULE, null));
         }
-        return result;
+        return new ArrayList<>(result.values());
     }
 
     private static List<ContentAssistEntry> attributeValues(XtextResource resource, TagContext tag) {
