@@ -81,7 +81,8 @@ public final class MironLanguageServer {
 
     /** Stand-alone entry point, the same as `miron lsp [--socket PORT]`. */
     public static void main(String[] args) throws Exception {
-        if (args.length == 2 && args[0].equals("--socket")) {
+        if (args.length == 2 && args[0].equals("--socket") && args[1].matches("\\d{1,5}")
+                && Integer.parseInt(args[1]) <= 65535) {
             serveSocket(Integer.parseInt(args[1]));
         } else if (args.length == 0) {
             serveStdio();
