@@ -90,6 +90,21 @@ public class DiagnosticsLspTest {
     }
 
     @Test
+    public void theHospitalExampleHasNoErrorsEither() throws Exception {
+        Path hospital = Workspaces.copyOfExample("hospital-delivery");
+        try (LspClient other = new LspClient()) {
+            other.initialize(hospital);
+            for (String file : List.of("hospital.miron", "hospital.roqme", "hospital.bt")) {
+                String uri = other.open(hospital.resolve(file));
+                other.awaitDiagnostics(uri, d -> true);
+                assertFalse(file + ": " + other.published(uri), IntralogisticsLspTest.hasErrors(other.published(uri)));
+            }
+        } finally {
+            Workspaces.delete(hospital);
+        }
+    }
+
+    @Test
     public void aFileChangedOnDiskRevalidatesItsImporters() throws Exception {
         Path roqme = workspace.resolve("intralogistics.roqme");
         String mironUri = client.open(workspace.resolve("intralogistics.miron"));
