@@ -1,0 +1,145 @@
+package org.miron.bt.ide.codeactions;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.eclipse.lsp4j.CodeAction;
+import org.eclipse.lsp4j.CodeActionKind;
+import org.eclipse.lsp4j.Command;
+import org.eclipse.lsp4j.Diagnostic;
+import org.eclipse.lsp4j.Position;
+import org.eclipse.lsp4j.Range;
+import org.eclipse.lsp4j.TextEdit;
+import org.eclipse.lsp4j.WorkspaceEdit;
+import org.eclipse.lsp4j.jsonrpc.messages.Either;
+import org.eclipse.xtext.ide.server.Document;
+import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+
+/**
+ * Quick fixes of all three languages, made from a diagnostic's issue code and issue data (see
+ * docs/issue-codes.md): the validators already computed the replacement, the names to suggest or
+ * the import to add, so a fix only turns them into text edits.
+ */
+public class IssueDataCodeActions implements ICodeActionService2 {
+
+    private enum Fix {
+        /** Rename an element's tag, also in its closing tag (data: the new tags, one action each). */
+        RENAME_TAG,
+        /** Replace the diagnostic's text with each name of the data (did you mean). */
+        REPLACE,
+        /** Add the import line data[0] to the file and write the reference as data[1]. */
+        ADD_IMPORT,
+        /** Add the include element data[0] after the root start tag. */
+        ADD_INCLUDE
+    }
+
+    private static final Map<String, Fix> FIXES = Map.of(
+            "bt.retry-old-spelling", Fix.RENAME_TAG,
+            "bt.fallback-star", Fix.RENAME_TAG,
+            "bt.close-tag-mismatch", Fix.REPLACE,
+            "bt.unknown-subtree", Fix.REPLACE,
+            "bt.unknown-main-tree", Fix.REPLACE,
+            "bt.unknown-reference", Fix.REPLACE,
+            "bt.missing-include", Fix.ADD_INCLUDE,
+            "roqme.unknown-reference", Fix.REPLACE,
+            "roqme.missing-import", Fix.ADD_IMPORT);
+
+    @Override
+    public List<Either<Command, CodeAction>> getCodeActions(Options options) {
+        // Xtext passes neither document nor resource: read them as its own quick-fix service does.
+        if (options.getDocument() == null && options.getLanguageServerAccess() != null) {
+            return options.getLanguageServerAccess().doSyncRead(options.getURI(), context -> {
+                options.setDocument(context.getDocument());
+                options.setResource(context.getResource());
+                return actions(options);
+            });
+        }
+        return actions(options);
+    }
+
+    private List<Either<Command, CodeAction>> actions(Options options) {
+        List<Either<Command, CodeAction>> actions = new ArrayList<>();
+        Document document = options.getDocument();
+        for (Diagnostic diagnostic : options.getCodeActionParams().getContext().getDiagnostics()) {
+            Fix fix = diagnostic.getCode() == null || !diagnostic.getCode().isLeft() ? null
+                    : FIXES.get(diagnostic.getCode().getLeft());
+            List<String> data = IssueData.of(diagnostic.getData());
+            if (fix == null || data.isEmpty() || document == null) {
+                continue;
+            }
+            switch (fix) {
+                case RENAME_TAG -> data.forEach(tag -> action(actions, options, diagnostic, "Change to " + tag,
+                        TagRename.edits(options.getResource(), document, diagnostic.getRange(), tag)));
+                case REPLACE -> data.forEach(name -> action(actions, options, diagnostic, "Change to " + name,
+                        List.of(new TextEdit(diagnostic.getRange(), keepQuotes(document, diagnostic.getRange(), name)))));
+                case ADD_IMPORT -> action(actions, options, diagnostic, "Add " + data.get(0),
+                        addImport(document, diagnostic.getRange(), data));
+                case ADD_INCLUDE -> action(actions, options, diagnostic, "Add " + data.get(0),
+                        List.of(insertAfterRootTag(document, data.get(0))));
+            }
+        }
+        return actions;
+    }
+
+    private static void action(List<Either<Command, CodeAction>> actions, Options options, Diagnostic diagnostic,
+            String title, List<TextEdit> edits) {
+        if (edits.isEmpty()) {
+            return;
+        }
+        CodeAction action = new CodeAction(title);
+        action.setKind(CodeActionKind.QuickFix);
+        action.setDiagnostics(List.of(diagnostic));
+        action.setEdit(new WorkspaceEdit(Map.of(options.getURI(), edits)));
+        actions.add(Either.forRight(action));
+    }
+
+    /** A BT reference is a quoted attribute value: the quotes stay, the name inside changes. */
+    private static String keepQuotes(Document document, Range range, String name) {
+        String text = text(document, range);
+        if (text.length() >= 2 && (text.charAt(0) == '"' || text.charAt(0) == '\'') && text.endsWith(text.substring(0, 1))) {
+            return text.charAt(0) + name + text.charAt(0);
+        }
+        return name;
+    }
+
+    private static List<TextEdit> addImport(Document document, Range reference, List<String> data) {
+        List<TextEdit> edits = new ArrayList<>();
+        edits.add(new TextEdit(new Range(importLine(document), importLine(document)), data.get(0) + "\n"));
+        if (data.size() > 1) {
+            edits.add(new TextEdit(reference, data.get(1)));
+        }
+        return edits;
+    }
+
+    /** After the last import; else after the `roqme`/`miron` header line; else at the top. */
+    private static Position importLine(Document document) {
+        String[] lines = document.getContents().split("\n", -1);
+        int after = -1;
+        for (int i = 0; i < lines.length; i++) {
+            String line = lines[i].strip();
+            if (line.startsWith("import ")) {
+                after = i;
+            } else if (after < 0 && (line.startsWith("roqme ") || line.startsWith("miron ") || line.equals("roqme")
+                    || line.equals("miron"))) {
+                after = i;
+            }
+        }
+        return new Position(after + 1, 0);
+    }
+
+    private static TextEdit insertAfterRootTag(Document document, String include) {
+        String text = document.getContents();
+        int root = text.indexOf("<root");
+        int end = root < 0 ? -1 : text.indexOf('>', root);
+        int offset = end < 0 ? 0 : end + 1;
+        Position at = document.getPosition(offset);
+        return new TextEdit(new Range(at, at), "\n  " + include);
+    }
+
+    private static String text(Document document, Range range) {
+        int start = document.getOffSet(range.getStart());
+        int end = document.getOffSet(range.getEnd());
+        return document.getContents().substring(start, end);
+    }
+}

@@ -1,0 +1,98 @@
+package org.miron.bt.ide.hover;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.TerminalRule;
+import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.ILeafNode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.miron.bt.bt.Attribute;
+import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.bt.TreeNode;
+import org.miron.bt.ide.nodes.NodeDeclaration;
+import org.miron.bt.ide.nodes.NodeDeclarations;
+
+/**
+ * Hover text of BT elements (markdown): the XML comment just before the element, and for a tree
+ * or a declared node its ports from {@code <TreeNodesModel>}.
+ */
+public class BtDocumentationProvider implements IEObjectDocumentationProvider {
+
+    @Override
+    public String getDocumentation(EObject element) {
+        return documentation(element);
+    }
+
+    /** Static so the MIRoN language's hover can describe the trees it imports the same way. */
+    public static String documentation(EObject element) {
+        // Over an attribute (<Action ID="MoveTo" x="1"/>) the node is what the reader wants described.
+        if (element instanceof Attribute && element.eContainer() instanceof TreeNode node) {
+            element = node;
+        }
+        List<String> parts = new ArrayList<>();
+        String comment = leadingComment(element);
+        if (comment != null) {
+            parts.add(comment);
+        }
+        String id = idOf(element);
+        if (id != null && element.eResource() != null) {
+            NodeDeclaration declaration = NodeDeclarations.visibleFrom(element.eResource()).get(id);
+            if (declaration != null) {
+                parts.add(ports(declaration));
+            }
+        }
+        return parts.isEmpty() ? null : String.join("\n\n", parts);
+    }
+
+    private static String idOf(EObject element) {
+        if (element instanceof BehaviorTree tree) {
+            return tree.getName();
+        }
+        if (element instanceof TreeNode node) {
+            String id = node.attribute("ID");
+            return id != null ? id : node.getTag();
+        }
+        return null;
+    }
+
+    /** `<Action ID="MoveTo">` ports as a markdown list. */
+    public static String ports(NodeDeclaration declaration) {
+        StringBuilder text = new StringBuilder("**" + declaration.kind() + " " + declaration.id() + "**");
+        if (declaration.ports().isEmpty()) {
+            return text.append(": no ports").toString();
+        }
+        text.append(", ports:\n");
+        for (NodeDeclaration.Port port : declaration.ports().values()) {
+            text.append("\n- `").append(port.name()).append("` (").append(port.direction().replace("_port", ""))
+                    .append(')');
+            if (port.description() != null && !port.description().isEmpty()) {
+                text.append(": ").append(port.description());
+            }
+        }
+        return text.toString();
+    }
+
+    /** The XML comment right before the element (the hidden tokens its node starts with). */
+    private static String leadingComment(EObject element) {
+        ICompositeNode node = NodeModelUtils.getNode(element);
+        if (node == null) {
+            return null;
+        }
+        String comment = null;
+        for (ILeafNode leaf : node.getLeafNodes()) {
+            if (!leaf.isHidden()) {
+                break;
+            }
+            if (leaf.getGrammarElement() instanceof TerminalRule rule && "XML_COMMENT".equals(rule.getName())) {
+                comment = leaf.getText();
+            }
+        }
+        if (comment == null) {
+            return null;
+        }
+        return comment.substring(4, comment.length() - 3).strip().replaceAll("\\s*\\R\\s*", "\n");
+    }
+}

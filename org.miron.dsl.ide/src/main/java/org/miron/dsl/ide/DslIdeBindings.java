@@ -1,0 +1,31 @@
+package org.miron.dsl.ide;
+
+import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
+import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
+import org.eclipse.xtext.ide.editor.contentassist.IdeCrossrefProposalProvider;
+import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.eclipse.xtext.service.AbstractGenericModule;
+import org.miron.bt.ide.codeactions.IssueDataCodeActions;
+import org.miron.dsl.ide.contentassist.DslCrossrefProposalProvider;
+import org.miron.dsl.ide.contentassist.DslProposalProvider;
+import org.miron.dsl.ide.hover.DslDocumentationProvider;
+
+/** The ide services RoQME and MIRoN share (their generated ide modules are unrelated classes). */
+public class DslIdeBindings extends AbstractGenericModule {
+
+    public Class<? extends ICodeActionService2> bindICodeActionService2() {
+        return IssueDataCodeActions.class;
+    }
+
+    public Class<? extends IEObjectDocumentationProvider> bindIEObjectDocumentationProvider() {
+        return DslDocumentationProvider.class;
+    }
+
+    public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
+        return DslProposalProvider.class;
+    }
+
+    public Class<? extends IdeCrossrefProposalProvider> bindIdeCrossrefProposalProvider() {
+        return DslCrossrefProposalProvider.class;
+    }
+}
