@@ -93,6 +93,57 @@ public final class Probe {
         return out;
     }
 
+    /**
+     * Starts the MIRoN language server in this framework on in-memory pipes, sends LSP's
+     * initialize request for the workspace folder and answers the server's raw JSON response.
+     */
+    public static String lspInitialize(String workspace) throws Exception {
+        java.io.PipedOutputStream toServer = new java.io.PipedOutputStream();
+        java.io.PipedInputStream serverIn = new java.io.PipedInputStream(toServer, 1 << 16);
+        java.io.PipedOutputStream serverOut = new java.io.PipedOutputStream();
+        java.io.PipedInputStream fromServer = new java.io.PipedInputStream(serverOut, 1 << 16);
+        java.util.concurrent.Future<Void> listening = org.miron.ide.server.MironLanguageServer.serve(serverIn, serverOut, false);
+        try {
+            String uri = new File(workspace).toURI().toString();
+            String request = "{\"jsonrpc\":\"2.0\",\"id\":1,\"method\":\"initialize\",\"params\":{\"processId\":null,"
+                    + "\"rootUri\":\"" + uri + "\",\"capabilities\":{}}}";
+            byte[] body = request.getBytes(java.nio.charset.StandardCharsets.UTF_8);
+            toServer.write(("Content-Length: " + body.length + "\r\n\r\n").getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+            toServer.write(body);
+            toServer.flush();
+            // Messages until the response to id 1 (the server may log or notify first).
+            while (true) {
+                int length = -1;
+                StringBuilder line = new StringBuilder();
+                while (true) {
+                    int c = fromServer.read();
+                    if (c < 0) {
+                        throw new java.io.EOFException("the server closed the connection");
+                    }
+                    if (c == '\n') {
+                        String header = line.toString().trim();
+                        if (header.isEmpty()) {
+                            break;
+                        }
+                        if (header.toLowerCase().startsWith("content-length:")) {
+                            length = Integer.parseInt(header.substring(15).trim());
+                        }
+                        line.setLength(0);
+                    } else {
+                        line.append((char) c);
+                    }
+                }
+                String message = new String(fromServer.readNBytes(length), java.nio.charset.StandardCharsets.UTF_8);
+                if (message.contains("\"id\":1") && (message.contains("\"result\"") || message.contains("\"error\""))) {
+                    return message;
+                }
+            }
+        } finally {
+            toServer.close();
+            listening.cancel(true);
+        }
+    }
+
     /** Generates the .miron files into dir: the stage, then the names written. */
     public static List<String> generate(List<String> files, String dir) {
         ModelLoader loader = new ModelLoader();

@@ -140,7 +140,8 @@ public class EquinoxTest {
     @Test
     public void ourBundlesCarryTheBuildsVersion() {
         String version = System.getProperty("miron.osgiVersion");
-        for (String name : List.of("org.miron.bt", "org.miron.dsl", "org.miron.generator")) {
+        for (String name : List.of("org.miron.bt", "org.miron.dsl", "org.miron.generator", "org.miron.bt.ide",
+                "org.miron.dsl.ide", "org.miron.ide")) {
             Bundle b = bundle(name);
             assertEquals(name, version, b.getVersion().toString());
             assertEquals(name, "JavaSE-17", b.getHeaders().get(Constants.BUNDLE_REQUIREDEXECUTIONENVIRONMENT));
@@ -225,6 +226,14 @@ public class EquinoxTest {
         Files.writeString(miron, Files.readString(miron).replaceFirst("import", "imprt"), StandardCharsets.UTF_8);
         List<String> diagnostics = call("check", List.of(miron.toString()));
         assertTrue(diagnostics.toString(), diagnostics.stream().anyMatch(d -> d.contains("error")));
+    }
+
+    @Test
+    public void theLanguageServerAnswersInitializeInsideOsgi() throws Exception {
+        String response = call("lspInitialize", example("intralogistics.miron").getParent().toString());
+        assertTrue(response, response.contains("\"result\"") && response.contains("\"capabilities\""));
+        assertTrue(response, response.contains("completionProvider"));
+        assertTrue(response, response.contains("miron.generate"));
     }
 
     @Test
