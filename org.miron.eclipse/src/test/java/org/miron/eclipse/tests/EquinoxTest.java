@@ -159,9 +159,10 @@ public class EquinoxTest {
     }
 
     @Test
-    public void editorBundleResolvesWithoutTm4eAndHoldsWhatItsPluginXmlNames() throws Exception {
+    public void editorBundleResolvesWithoutTm4eAndLsp4eAndHoldsWhatItsPluginXmlNames() throws Exception {
         Bundle editor = bundle("org.miron.eclipse.editor");
         assertEquals(Bundle.ACTIVE, editor.getState());
+        assertEquals("org.eclipse.lsp4e.server;resolution:=optional", editor.getHeaders().get(Constants.IMPORT_PACKAGE));
         assertEquals(System.getProperty("miron.osgiVersion"), editor.getVersion().toString());
         String pluginXml = new String(editor.getEntry("plugin.xml").openStream().readAllBytes(), StandardCharsets.UTF_8);
         var paths = java.util.regex.Pattern.compile("path=\"([^\"]+)\"").matcher(pluginXml);
@@ -173,6 +174,7 @@ public class EquinoxTest {
         assertEquals("3 grammars and 3 language configurations", 6, count);
         for (String type : List.of("org.miron.bt", "org.miron.roqme", "org.miron.miron")) {
             assertTrue(type, pluginXml.contains("scopeNameContentTypeBinding scopeName=") && pluginXml.contains("contentTypeId=\"" + type + "\""));
+            assertTrue(type, pluginXml.contains("<contentTypeMapping id=\"org.miron.languageServer\" contentType=\"" + type + "\""));
         }
     }
 
@@ -234,6 +236,28 @@ public class EquinoxTest {
         assertTrue(response, response.contains("\"result\"") && response.contains("\"capabilities\""));
         assertTrue(response, response.contains("completionProvider"));
         assertTrue(response, response.contains("miron.generate"));
+    }
+
+    @Test
+    public void lsp4eProviderStartsTheServerInProcess() throws Exception {
+        // The class LSP4E instantiates from plugin.xml (here against the LSP4E stand-in bundle).
+        Bundle editor = bundle("org.miron.eclipse.editor");
+        String pluginXml = new String(editor.getEntry("plugin.xml").openStream().readAllBytes(), StandardCharsets.UTF_8);
+        String cls = "org.miron.eclipse.editor.MironStreamConnectionProvider";
+        assertTrue(pluginXml.contains("class=\"" + cls + "\""));
+        Class<?> type = editor.loadClass(cls);
+        Object provider = type.getConstructor().newInstance();
+        type.getMethod("start").invoke(provider);
+        try {
+            java.io.OutputStream out = (java.io.OutputStream) type.getMethod("getOutputStream").invoke(provider);
+            java.io.InputStream in = (java.io.InputStream) type.getMethod("getInputStream").invoke(provider);
+            String uri = example("intralogistics.miron").getParent().toUri().toString();
+            String response = Lsp.request(out, in, 1, "initialize",
+                    "{\"processId\":null,\"rootUri\":\"" + uri + "\",\"capabilities\":{}}");
+            assertTrue(response, response.contains("\"capabilities\"") && response.contains("miron.generate"));
+        } finally {
+            type.getMethod("stop").invoke(provider);
+        }
     }
 
     @Test
