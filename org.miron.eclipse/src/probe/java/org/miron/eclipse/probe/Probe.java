@@ -144,6 +144,43 @@ public final class Probe {
         }
     }
 
+    /**
+     * The editor bundle's "Generate MIRoN artefacts" handler, headless: a workspace project with
+     * copies of the example's files, the handler executed on the .miron file selected, its job
+     * awaited; answers the files of generated/ as the workspace sees them, then the status of
+     * generating a broken copy ("severity message").
+     */
+    public static List<String> generateThroughCommand(String exampleDir, String brokenModelText) throws Exception {
+        org.eclipse.core.resources.IWorkspace workspace = org.eclipse.core.resources.ResourcesPlugin.getWorkspace();
+        org.eclipse.core.resources.IProject project = workspace.getRoot().getProject("intralogistics");
+        project.create(null);
+        project.open(null);
+        for (File f : new File(exampleDir).listFiles(File::isFile)) {
+            try (java.io.InputStream in = new java.io.FileInputStream(f)) {
+                project.getFile(f.getName()).create(in, true, null);
+            }
+        }
+        org.eclipse.core.resources.IFile model = project.getFile("intralogistics.miron");
+        org.eclipse.core.expressions.EvaluationContext context = new org.eclipse.core.expressions.EvaluationContext(null, model);
+        context.addVariable("selection", List.of(model));
+        new org.miron.eclipse.editor.GenerateHandler()
+                .execute(new org.eclipse.core.commands.ExecutionEvent(null, Map.of(), null, context));
+        org.eclipse.core.runtime.jobs.Job.getJobManager().join(org.miron.eclipse.editor.GenerateHandler.FAMILY, null);
+        List<String> out = new ArrayList<>();
+        org.eclipse.core.resources.IFolder generated = project.getFolder("generated");
+        if (generated.exists()) {
+            for (org.eclipse.core.resources.IResource r : generated.members()) {
+                out.add(r.getName());
+            }
+        }
+        java.util.Collections.sort(out);
+        org.eclipse.core.resources.IFile broken = project.getFile("broken.miron");
+        broken.create(new java.io.ByteArrayInputStream(brokenModelText.getBytes(java.nio.charset.StandardCharsets.UTF_8)), true, null);
+        org.eclipse.core.runtime.IStatus status = org.miron.eclipse.editor.GenerateHandler.generate(broken);
+        out.add((status.getSeverity() == org.eclipse.core.runtime.IStatus.ERROR ? "ERROR " : "NOT-ERROR ") + status.getMessage());
+        return out;
+    }
+
     /** Generates the .miron files into dir: the stage, then the names written. */
     public static List<String> generate(List<String> files, String dir) {
         ModelLoader loader = new ModelLoader();

@@ -79,14 +79,22 @@ public class EquinoxTest {
         }
         framework.start();
         framework.adapt(FrameworkWiring.class).resolveBundles(bundles);
-        for (Bundle bundle : bundles) {
+        // As Eclipse's start levels do: Declarative Services first, then the content types (a DS
+        // component the workspace needs when it starts), then everything else.
+        List<String> first = List.of("org.apache.felix.scr", "org.eclipse.core.contenttype");
+        List<Bundle> order = new ArrayList<>(bundles);
+        order.sort(java.util.Comparator.comparingInt(b -> {
+            int i = first.indexOf(b.getSymbolicName());
+            return i < 0 ? first.size() : i;
+        }));
+        for (Bundle bundle : order) {
             if (bundle.getHeaders().get(Constants.FRAGMENT_HOST) != null) {
                 continue;
             }
             try {
                 bundle.start();
             } catch (BundleException e) {
-                problems.add(bundle.getSymbolicName() + " did not start: " + e);
+                problems.add(bundle.getSymbolicName() + " did not start: " + e + " caused by " + e.getCause());
             }
         }
         probe = bundle("org.miron.eclipse.probe").loadClass("org.miron.eclipse.probe.Probe");
@@ -258,6 +266,17 @@ public class EquinoxTest {
         } finally {
             type.getMethod("stop").invoke(provider);
         }
+    }
+
+    @Test
+    public void generateCommandWritesTheFourFilesThroughTheServer() throws Exception {
+        String broken = Files.readString(example("intralogistics.miron")).replaceFirst("import", "imprt");
+        List<String> result = call("generateThroughCommand", example("intralogistics.miron").getParent().toString(), broken);
+        // Four files in generated/, refreshed into the workspace; then the broken copy's status.
+        assertEquals(result.toString(), 5, result.size());
+        assertTrue(result.toString(), result.subList(0, 4).stream().anyMatch(f -> f.endsWith(".io.json")));
+        assertTrue(result.toString(), result.subList(0, 4).stream().anyMatch(f -> f.endsWith(".mzn")));
+        assertTrue(result.get(4), result.get(4).startsWith("ERROR Not generated: broken.miron has"));
     }
 
     @Test
