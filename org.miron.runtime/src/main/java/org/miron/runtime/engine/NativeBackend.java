@@ -90,6 +90,35 @@ public final class NativeBackend implements SolverBackend {
         return new SolveResult(SolveResult.Status.SOLVED, decisions, true, "", millisSince(start));
     }
 
+    /**
+     * The .mzn's objective ({@code scale * gain + tie}) of a given decision under these inputs, or
+     * null when it breaks a constraint: tells an alternative optimum (equal objective, a tie the
+     * model leaves to the solver's search) from a real difference.
+     */
+    public Long objective(Map<String, Object> params, Map<String, Integer> decisions) {
+        if (read(params) != null || !domains()) {
+            return null;
+        }
+        for (int v = 0; v < m.varpointCount; v++) {
+            Integer i = decisions.get(m.decisionNames[v]);
+            if (i == null || i < 0 || i >= m.sizes[v] || !allowed[v][i]) {
+                return null;
+            }
+            assign[v] = i;
+        }
+        for (NativeModel.Constraint k : m.constraints) {
+            if (guarded(k) && violated(k)) {
+                return null;
+            }
+        }
+        scores();
+        long total = 0;
+        for (int v = 0; v < m.varpointCount; v++) {
+            total += score[v][assign[v]];
+        }
+        return total;
+    }
+
     private static SolveResult unsat(long start) {
         return SolveResult.failed(SolveResult.Status.UNSAT, "model is unsatisfiable", millisSince(start));
     }
