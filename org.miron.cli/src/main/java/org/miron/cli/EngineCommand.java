@@ -19,7 +19,7 @@ public final class EngineCommand implements Callable<Integer> {
     @Option(names = "--io", required = true, paramLabel = "FILE", description = "the generated name.io.json")
     Path io;
 
-    @Option(names = "--backend", description = "solver backend (default: ${DEFAULT-VALUE})")
+    @Option(names = "--backend", description = "solver backend: minizinc (the reference), native (in process), both (cross-check) (default: ${DEFAULT-VALUE})")
     String backend = "minizinc";
 
     @Option(names = "--minizinc", paramLabel = "PATH", description = "MiniZinc executable (default: ${DEFAULT-VALUE})")

@@ -1,5 +1,6 @@
 package org.miron.generator;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -15,13 +16,16 @@ import org.miron.dsl.roqme.Property;
  * properties and contexts the generated model reads (its engine-fed parameters).
  */
 public final class AdaptationModel {
-    /** One consequence of a rule: a constraint on varpoints, guarded by their overrides. */
-    public record Consequence(String constraint, Set<SampledVarpoint> varpoints) {
+    /**
+     * One consequence of a rule: a constraint on varpoints, guarded by their overrides; in
+     * MiniZinc and as the expression tree of the io.json decision section (ExpressionToTree).
+     */
+    public record Consequence(String constraint, JsonNode tree, Set<SampledVarpoint> varpoints) {
     }
 
-    /** A rule in MiniZinc. */
-    public record TranslatedRule(Rule rule, String source, String condition, Set<Context> contexts,
-            List<Consequence> consequences) {
+    /** A rule in MiniZinc, its condition also as an expression tree. */
+    public record TranslatedRule(Rule rule, String source, String condition, JsonNode conditionTree,
+            Set<Context> contexts, List<Consequence> consequences) {
     }
 
     public final MironModel model;

@@ -45,7 +45,46 @@ class IoMapGenerator {
 		m.contexts.forEach[inputs.add(context(it))]
 		val varpoints = root.putArray("varpoints")
 		m.varpoints.forEach[varpoints.add(varpoint(it))]
+		root.set("decision", decision(m))
 		root
+	}
+
+	/**
+	 * What the .mzn decides, structured for an in-process solver: utility tables per varpoint (as
+	 * printed in the .dzn, so both backends weigh the same numbers) and the rules as expression
+	 * trees with their guards (docs/io-json.md, "decision").
+	 */
+	def private decision(AdaptationModel m) {
+		val node = json.objectNode
+		node.put("objective", if (m.hasImpacts) "maximize" else "satisfy")
+		val varpoints = node.putArray("varpoints")
+		for (vp : m.varpoints) {
+			val v = varpoints.addObject
+			v.put("name", vp.name)
+			val utilities = v.putArray("utilities")
+			for (e : vp.utilities.entrySet) {
+				val u = utilities.addObject
+				u.put("metric", Names.metric(e.key))
+				val table = u.putArray("table")
+				e.value.forEach[table.add(new BigDecimal(Numbers.utility(it)))]
+			}
+		}
+		val rules = node.putArray("rules")
+		for (r : m.rules) {
+			val rule = rules.addObject
+			rule.put("name", r.rule.name)
+			val known = rule.putArray("known")
+			r.contexts.forEach[known.add(Names.known(it))]
+			rule.set("condition", r.conditionTree)
+			val consequences = rule.putArray("consequences")
+			for (c : r.consequences) {
+				val consequence = consequences.addObject
+				val overrides = consequence.putArray("overrides")
+				c.varpoints.forEach[overrides.add(name)]
+				consequence.set("constraint", c.tree)
+			}
+		}
+		node
 	}
 
 	def private metric(Property p) {

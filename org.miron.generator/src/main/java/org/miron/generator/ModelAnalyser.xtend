@@ -1,5 +1,6 @@
 package org.miron.generator
 
+import com.fasterxml.jackson.databind.node.JsonNodeFactory
 import java.util.LinkedHashMap
 import java.util.LinkedHashSet
 import java.util.List
@@ -41,8 +42,9 @@ class ModelAnalyser {
 		}
 
 		val translator = new ExpressionToMiniZinc(byElement, errors)
+		val trees = new ExpressionToTree(byElement)
 		for (rule : models.map[sentences.filter(Rule)].flatten) {
-			m.rules += translate(rule, translator)
+			m.rules += translate(rule, translator, trees)
 		}
 		m.varpoints.forEach[m.properties += utilities.keySet]
 		m.properties += translator.properties
@@ -68,18 +70,19 @@ class ModelAnalyser {
 		seen.toList
 	}
 
-	def private translate(Rule rule, ExpressionToMiniZinc translator) {
+	def private translate(Rule rule, ExpressionToMiniZinc translator, ExpressionToTree trees) {
 		val guard = new ExpressionToMiniZinc.Mentions
 		val condition = if (rule.condition?.term === null) "true" else translator.translate(rule.condition.term, guard)
+		val conditionTree = if (rule.condition?.term === null) JsonNodeFactory.instance.objectNode.put("const", true) else trees.translate(rule.condition.term)
 		val consequences = <AdaptationModel.Consequence>newArrayList
 		val contexts = new LinkedHashSet(guard.contexts)
 		for (c : rule.implies) {
 			val mentions = new ExpressionToMiniZinc.Mentions
-			consequences += new AdaptationModel.Consequence(translator.translate(c.term, mentions), mentions.varpoints)
+			consequences += new AdaptationModel.Consequence(translator.translate(c.term, mentions), trees.translate(c.term), mentions.varpoints)
 			contexts += mentions.contexts
 		}
 		val source = '''«rule.name»: «IF rule.condition !== null»«text(rule.condition)» «ENDIF»implies «rule.implies.map[text(it)].join(", ")»'''
-		new AdaptationModel.TranslatedRule(rule, source, condition, contexts, consequences)
+		new AdaptationModel.TranslatedRule(rule, source, condition, conditionTree, contexts, consequences)
 	}
 
 	/** The source text of an element on one line (for comments in the generated model). */

@@ -61,7 +61,8 @@ public class IoJsonContractTest {
         assertTrue(text, text.startsWith("{\n  \"format\": 1,\n  \"model\": \"intralogistics\",\n"));
         assertTrue(text, text.contains("\n      \"values\": [\"pick\", \"deliver\", \"dock\", \"pickDeliverCharge\"],\n"));
         assertTrue(text, text.contains("\n  \"varpoints\": [\n    {\n      \"name\": \"task\",\n"));
-        assertTrue(text, text.endsWith("\n    }\n  ]\n}\n"));
+        assertTrue(text, text.contains("\n    }\n  ],\n  \"decision\": {\n    \"objective\": \"maximize\",\n"));
+        assertTrue(text, text.endsWith("\n  }\n}\n"));
     }
 
     @Test
@@ -77,7 +78,9 @@ public class IoJsonContractTest {
                 io -> ((ObjectNode) io.get("inputs").get(0)).put("type", "string"),
                 io -> io.put("format", 2),
                 io -> io.remove("mzn"),
-                io -> io.put("unexpected", true));
+                io -> io.put("unexpected", true),
+                io -> ((ObjectNode) io.get("decision")).put("objective", "minimize"),
+                io -> ((ObjectNode) io.get("decision").get("rules").get(0)).putObject("condition").put("op", "xor"));
         for (int i = 0; i < breakages.size(); i++) {
             ObjectNode broken = good.deepCopy();
             breakages.get(i).accept(broken);

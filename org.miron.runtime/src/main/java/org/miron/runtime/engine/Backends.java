@@ -14,9 +14,20 @@ public final class Backends {
     }
 
     private static final Map<String, Factory> FACTORIES = new TreeMap<>(Map.of(
-            "minizinc", (model, o) -> new MiniZincBackend(model, o.minizinc, o.solver, o.timeLimitMs)));
+            "minizinc", Backends::minizinc,
+            "native", Backends::nativeBackend,
+            "both", (model, o) -> new CrossCheckBackend(minizinc(model, o), nativeBackend(model, o))));
 
     private Backends() {
+    }
+
+    private static SolverBackend minizinc(IoModel model, EngineOptions o) {
+        return new MiniZincBackend(model, o.minizinc, o.solver, o.timeLimitMs);
+    }
+
+    /** Throws IllegalArgumentException when the io.json has no usable decision section. */
+    private static SolverBackend nativeBackend(IoModel model, EngineOptions o) {
+        return new NativeBackend(model);
     }
 
     public static synchronized void register(String name, Factory factory) {
@@ -30,6 +41,10 @@ public final class Backends {
             throw new EngineStartException("unknown backend '" + name + "' (available: "
                     + String.join(", ", FACTORIES.keySet()) + ")");
         }
-        return f.create(model, options);
+        try {
+            return f.create(model, options);
+        } catch (IllegalArgumentException e) {
+            throw new EngineStartException("backend " + name + ": " + e.getMessage());
+        }
     }
 }

@@ -169,6 +169,7 @@ public final class Engine implements AutoCloseable {
             }
         }
         status.solveOutcome(r);
+        backend.counters().forEach(status::set);
         ObjectNode entry = Json.object();
         entry.put("time", System.currentTimeMillis());
         entry.put("model", model.model());

@@ -31,6 +31,11 @@ public final class EngineStatus {
         counters.merge(counter, 1L, Long::sum);
     }
 
+    /** Sets a counter kept elsewhere (a backend's). */
+    public synchronized void set(String counter, long value) {
+        counters.put(counter, value);
+    }
+
     public synchronized long get(String counter) {
         return counters.getOrDefault(counter, 0L);
     }

@@ -12,8 +12,15 @@ import java.util.function.Supplier;
 import java.util.regex.Pattern;
 import org.miron.runtime.Json;
 
-/** The generated {@code name.io.json} (docs/io-json.md), with the .mzn/.dzn paths resolved. */
-public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, List<VarPoint> varpoints) {
+/**
+ * The generated {@code name.io.json} (docs/io-json.md), with the .mzn/.dzn paths resolved.
+ *
+ * @param weights  the objective's weight policy, {@code need} (default) or {@code metric}
+ * @param decision the structured {@code decision} section (the native backend's input), null in
+ *                 files generated before it existed
+ */
+public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, List<VarPoint> varpoints,
+        String weights, JsonNode decision) {
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final List<String> ROQME_TYPES = List.of("boolean", "event", "enum", "number");
 
@@ -61,7 +68,9 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
             vps.add(varpoint(varpointNodes.get(i), "varpoints[" + i + "]"));
         }
         String model = optional(root, "model");
-        return new IoModel(model == null ? "model" : model, mzn, dzn, List.copyOf(inputs), List.copyOf(vps));
+        JsonNode decision = root.get("decision");
+        return new IoModel(model == null ? "model" : model, mzn, dzn, List.copyOf(inputs), List.copyOf(vps),
+                root.path("weights").asText("need"), decision == null || decision.isNull() ? null : decision);
     }
 
     private static InputSpec input(JsonNode in) {

@@ -84,7 +84,20 @@ public class EngineFailureTest {
             Engine.create(o);
             fail("engine accepted an unknown backend");
         } catch (EngineStartException e) {
-            assertTrue(e.getMessage(), e.getMessage().contains("unknown backend 'quantum' (available: minizinc"));
+            assertTrue(e.getMessage(), e.getMessage().contains("unknown backend 'quantum' (available: both, minizinc, native)"));
+        }
+    }
+
+    @Test
+    public void nativeBackendOnAFileWithoutDecisionSectionIsAClearStartupError() throws Exception {
+        EngineOptions o = f.options(); // testbot.io.json is hand-made for MiniZinc: no decision section
+        o.backend = "native";
+        try {
+            Engine.create(o);
+            fail("native backend accepted an io.json without decision section");
+        } catch (EngineStartException e) {
+            assertTrue(e.getMessage(), e.getMessage().contains("backend native: no 'decision' section")
+                    && e.getMessage().contains("--backend minizinc"));
         }
     }
 
