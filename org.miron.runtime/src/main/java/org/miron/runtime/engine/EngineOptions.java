@@ -12,7 +12,7 @@ public final class EngineOptions {
     public String backend = "minizinc";
     public String minizinc = "minizinc";
     public String solver = "gecode";
-    /** Solver time limit; 0: automatic, 2 s + 10 ms per varpoint (MiniZincBackend.autoTimeLimitMs). */
+    /** Solver time limit; 0: automatic, 2 s + 25 ms per varpoint (MiniZincBackend.autoTimeLimitMs). */
     public long timeLimitMs = 0;
     /** Null: no decision log. */
     public Path decisionLog;

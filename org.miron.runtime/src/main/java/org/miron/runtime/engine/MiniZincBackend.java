@@ -38,9 +38,9 @@ public final class MiniZincBackend implements SolverBackend {
         this.timeLimitMs = timeLimitMs > 0 ? timeLimitMs : autoTimeLimitMs(model.varpoints().size());
     }
 
-    /** 2 s plus 10 ms per varpoint: room for flattening large models on a slow machine. */
+    /** 2 s plus 25 ms per varpoint: room for flattening large models on a slow or busy machine. */
     public static long autoTimeLimitMs(int varpoints) {
-        return 2000 + 10L * varpoints;
+        return 2000 + 25L * varpoints;
     }
 
     public long timeLimitMs() {
