@@ -26,7 +26,8 @@ import org.miron.runtime.engine.SolverBackend;
  * {@code gradle :org.miron.runtime:bench [-Pbackends=minizinc,native] [-Prounds=N]}: prints, per
  * backend, decision p50/p99 and allocation per decision on intralogistics and on synthetic models
  * (SyntheticModel) of 5/50/200/1 000 varpoints, the time to generate the 1 000-varpoint model, and
- * end-to-end latencies over loopback sockets (EndToEnd). Numbers only; nothing is asserted.
+ * end-to-end latencies over loopback sockets (EndToEnd), once more with repeated inputs answered
+ * from a cache (the bus and engine alone). Numbers only; nothing is asserted.
  */
 public final class Bench {
     private static final int[] SIZES = { 5, 50, 200, 1000 };
@@ -42,7 +43,8 @@ public final class Bench {
         Map<String, Path> models = new LinkedHashMap<>();
         models.put("intralogistics", generateExample(root.resolve("examples/intralogistics/intralogistics.miron"),
                 dir.resolve("intralogistics")));
-        for (int n : SIZES) {
+        boolean e2eOnly = "e2e".equals(System.getProperty("bench.only")); // -Ponly=e2e
+        for (int n : e2eOnly ? new int[0] : SIZES) {
             long t0 = System.nanoTime();
             models.put("synthetic " + n, SyntheticModel.generate(n, dir.resolve("syn" + n)));
             if (n == 1000) {
@@ -53,7 +55,7 @@ public final class Bench {
 
         System.out.println();
         System.out.println("decision (backend.solve), ms         backend      p50      p99   alloc/decision  not optimal");
-        for (String backend : backends) {
+        for (String backend : e2eOnly ? List.<String>of() : backends) {
             for (Map.Entry<String, Path> m : models.entrySet()) {
                 IoModel io = IoModel.load(m.getValue());
                 int n = io.varpoints().size();
@@ -65,7 +67,8 @@ public final class Bench {
         System.out.println();
         System.out.println("end to end over loopback (broker, engine, skill mock), ms   backend      p50      p99");
         for (String backend : backends) {
-            EndToEnd.run(backend, models.get("intralogistics"), rounds);
+            EndToEnd.run(backend, models.get("intralogistics"), rounds, false);
+            EndToEnd.run(backend, models.get("intralogistics"), rounds, true);
         }
     }
 

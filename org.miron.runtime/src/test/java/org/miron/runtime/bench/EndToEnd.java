@@ -36,7 +36,11 @@ final class EndToEnd {
     private EndToEnd() {
     }
 
-    static void run(String backend, Path ioJson, int rounds) throws Exception {
+    /**
+     * @param cached answer repeated inputs from a cache instead of the solver: what is left is the
+     *               time of the bus, broker and engine alone
+     */
+    static void run(String backend, Path ioJson, int rounds, boolean cached) throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         IoModel io = IoModel.load(ioJson);
         EngineOptions o = new EngineOptions(ioJson).endpoints(ep);
@@ -51,7 +55,8 @@ final class EndToEnd {
                 BusClient watch = new BusClient("bench-watch", ep.busIn(), ep.busOut(), List.of(Topics.VARIANT_PREFIX),
                         (t, b) -> variants.add(new String[] { t, new String(b, StandardCharsets.UTF_8),
                                 Long.toString(System.nanoTime()) })).start();
-                Engine engine = new Engine(io, timed(Backends.create(backend, io, o), solveNanos, solves), o).start()) {
+                Engine engine = new Engine(io, timed(Backends.create(backend, io, o), solveNanos, solves, cached), o)
+                        .start()) {
             input.awaitReady(TIMEOUT_MS);
             watch.awaitReady(TIMEOUT_MS);
             take(variants, "task"); // the initial decision
@@ -89,6 +94,9 @@ final class EndToEnd {
                 }
             }
             long[] solver = java.util.Arrays.copyOf(solveNanos, Math.min(solves[0], solveNanos.length));
+            if (cached) {
+                backend += " (cached)";
+            }
             System.out.printf("%-60s %-9s %s%n", "input -> variant (" + rounds + ")", backend, new Stats(variant).p50p99());
             System.out.printf("%-60s %-9s %s%n", "input -> change-parameter (" + rounds + ")", backend, new Stats(param).p50p99());
             System.out.printf("%-60s %-9s %s%n", "  overhead: input -> variant minus that round's solve", backend,
@@ -131,7 +139,8 @@ final class EndToEnd {
     }
 
     /** The backend, recording how long each solve takes. */
-    private static SolverBackend timed(SolverBackend b, long[] nanos, int[] count) {
+    private static SolverBackend timed(SolverBackend b, long[] nanos, int[] count, boolean cached) {
+        Map<Map<String, Object>, SolveResult> cache = new java.util.HashMap<>();
         return new SolverBackend() {
             @Override
             public String name() {
@@ -146,7 +155,13 @@ final class EndToEnd {
             @Override
             public SolveResult solve(Map<String, Object> params) {
                 long t0 = System.nanoTime();
-                SolveResult r = b.solve(params);
+                SolveResult r = cached ? cache.get(params) : null;
+                if (r == null) {
+                    r = b.solve(params);
+                    if (cached) {
+                        cache.put(new java.util.HashMap<>(params), r);
+                    }
+                }
                 synchronized (nanos) {
                     if (count[0] < nanos.length) {
                         nanos[count[0]] = System.nanoTime() - t0;
