@@ -8,8 +8,21 @@ import com.google.inject.Injector;
 /** Standalone (non-Eclipse) set-up of the BT language. */
 public class BtStandaloneSetup extends BtStandaloneSetupGenerated {
 
-    public static Injector doSetup() {
-        return new BtStandaloneSetup().createInjectorAndDoEMFRegistration();
+    private static Injector injector; // guarded by the class
+
+    /**
+     * One injector per process: creating one costs a noticeable part of a CLI run, and the RoQME
+     * and MIRoN set-ups ask for BT too. The registrations are repeated (cheap) on every call, as
+     * tests may restore EMF's global registries in between.
+     */
+    public static synchronized Injector doSetup() {
+        if (injector == null) {
+            injector = new BtStandaloneSetup().createInjectorAndDoEMFRegistration();
+        } else {
+            EPackage.Registry.INSTANCE.putIfAbsent(BtPackage.eNS_URI, BtPackage.eINSTANCE);
+            new BtStandaloneSetup().register(injector);
+        }
+        return injector;
     }
 
     @Override

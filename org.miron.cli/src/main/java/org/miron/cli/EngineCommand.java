@@ -28,8 +28,8 @@ public final class EngineCommand implements Callable<Integer> {
     @Option(names = "--solver", description = "MiniZinc solver (default: ${DEFAULT-VALUE})")
     String solver = "gecode";
 
-    @Option(names = "--time-limit", paramLabel = "MS", description = "solver time limit in ms (default: ${DEFAULT-VALUE})")
-    long timeLimit = 2000;
+    @Option(names = "--time-limit", paramLabel = "MS", description = "solver time limit in ms, flattening included; 0: 2000 + 25 per varpoint (default: ${DEFAULT-VALUE})")
+    long timeLimit = 0;
 
     @Option(names = "--decision-log", paramLabel = "FILE",
             description = "append-only JSON-lines decision log (default: ${DEFAULT-VALUE})")

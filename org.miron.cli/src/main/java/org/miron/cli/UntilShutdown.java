@@ -21,7 +21,12 @@ final class UntilShutdown {
                 closed.countDown();
             }
         }, "miron-" + name + "-shutdown");
-        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            Runtime.getRuntime().addShutdownHook(hook);
+        } catch (IllegalStateException e) { // SIGTERM came while the component was starting
+            hook.run();
+            return 0;
+        }
         try {
             closed.await();
         } catch (InterruptedException e) {

@@ -14,8 +14,19 @@ import com.google.inject.Injector;
  */
 public class MironStandaloneSetup extends MironStandaloneSetupGenerated {
 
-    public static Injector doSetup() {
-        return new MironStandaloneSetup().createInjectorAndDoEMFRegistration();
+    private static Injector injector; // guarded by the class
+
+    /** One injector per process, registrations repeated on every call (see BtStandaloneSetup). */
+    public static synchronized Injector doSetup() {
+        if (injector == null) {
+            injector = new MironStandaloneSetup().createInjectorAndDoEMFRegistration();
+        } else {
+            EPackage.Registry.INSTANCE.putIfAbsent(MironPackage.eNS_URI, MironPackage.eINSTANCE);
+            RoqmeStandaloneSetup.doSetup();
+            BtStandaloneSetup.doSetup();
+            new MironStandaloneSetup().register(injector);
+        }
+        return injector;
     }
 
     @Override

@@ -9,8 +9,18 @@ import com.google.inject.Injector;
 /** Standalone (non-Eclipse) set-up of the RoQME language. */
 public class RoqmeStandaloneSetup extends RoqmeStandaloneSetupGenerated {
 
-    public static Injector doSetup() {
-        return new RoqmeStandaloneSetup().createInjectorAndDoEMFRegistration();
+    private static Injector injector; // guarded by the class
+
+    /** One injector per process, registrations repeated on every call (see BtStandaloneSetup). */
+    public static synchronized Injector doSetup() {
+        if (injector == null) {
+            injector = new RoqmeStandaloneSetup().createInjectorAndDoEMFRegistration();
+        } else {
+            EPackage.Registry.INSTANCE.putIfAbsent(RoqmePackage.eNS_URI, RoqmePackage.eINSTANCE);
+            BtStandaloneSetup.doSetup();
+            new RoqmeStandaloneSetup().register(injector);
+        }
+        return injector;
     }
 
     @Override

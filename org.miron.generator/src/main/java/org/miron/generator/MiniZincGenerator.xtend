@@ -10,7 +10,9 @@ package org.miron.generator
  *  - tie  = sum over varpoints of 2 * (value is the preset) + (value is the current one).
  * tie is at most 3 per varpoint and TIE_SCALE = 3 * varpoints + 1, so one unit of gain always
  * beats any tie-break: ties (also differences below 0.01) go to the preset, then to the current
- * value, which keeps the robot from flapping when nothing changed.
+ * value, which keeps the robot from flapping when nothing changed. When that product could leave
+ * 32-bit integers (ObjectiveScale) the objective is the gain alone and the search order, which
+ * tries the largest gain, then the preset, then the current value first, does the tie-break.
  */
 class MiniZincGenerator {
 
@@ -87,22 +89,38 @@ class MiniZincGenerator {
 		parts.join(" /\\ ")
 	}
 
-	def private objective(AdaptationModel m) '''
-		% Objective. miron_gain: per varpoint, round(100 * sum_p weight_p * utility_p) of its value (units of
-		% 0.01 weighted utility). miron_tie: per varpoint, 2 at its preset + 1 at its current value. The
-		% largest tie is below miron_tie_scale, so one unit of gain outweighs every tie-break, and equal
-		% gains go to the preset, then to the current value (no flapping when nothing changed).
+	def private objective(AdaptationModel m) {
+		val scale = new ObjectiveScale(m)
+		'''
+		% Objective. miron_gain: per varpoint, round(«scale.unitText» * sum_p weight_p * utility_p) of its value (units
+		% of «IF scale.unitText == "100.0"»0.01«ELSE»1/«scale.unitText»«ENDIF» weighted utility). miron_tie: per varpoint, 2 at its preset + 1 at its current value.
+		«IF scale.lexicographic»
+			% The largest tie is below miron_tie_scale, so one unit of gain outweighs every tie-break, and equal
+			% gains go to the preset, then to the current value (no flapping when nothing changed). Largest
+			% objective: «scale.objectiveBound» (fits 32-bit integers).
+		«ELSE»
+			% miron_tie_scale * miron_gain could pass 32-bit integers («scale.tieScale» * «scale.gainBound»): the objective is
+			% miron_gain alone; the search order tries, per varpoint, the largest gain first and among equal
+			% gains the preset, then the current value, so ties go there in search order.
+		«ENDIF»
 		«FOR p : m.properties.filter[p | m.varpoints.exists[utilities.containsKey(p)]]»
 			float: «Names.weight(p)» = «IF m.weights == WeightPolicy.NEED»1.0 - «ENDIF»«Names.metric(p)»;
 		«ENDFOR»
 		«FOR vp : m.varpoints.filter[!utilities.empty]»
-			array[0..«vp.n»-1] of int: «vp.gain» = array1d(0..«vp.n»-1, [round(100.0 * («FOR p : vp.utilities.keySet SEPARATOR ' + '»«Names.weight(p)» * «Names.utility(vp.name, p)»[i]«ENDFOR»)) | i in 0..«vp.n»-1]);
+			array[0..«vp.n»-1] of int: «vp.gain» = array1d(0..«vp.n»-1, [round(«scale.unitText» * («FOR p : vp.utilities.keySet SEPARATOR ' + '»«Names.weight(p)» * «Names.utility(vp.name, p)»[i]«ENDFOR»)) | i in 0..«vp.n»-1]);
 		«ENDFOR»
-		int: miron_tie_scale = «3 * m.varpoints.size + 1»;
+		int: miron_tie_scale = «scale.tieScale»;
 		var int: miron_gain = «FOR vp : m.varpoints.filter[!utilities.empty] SEPARATOR ' + '»«vp.gain»[«vp.decision»]«ENDFOR»;
 		var int: miron_tie = «tie(m)»;
-		solve maximize miron_tie_scale * miron_gain + miron_tie;
-	'''
+		% Search: per varpoint its values by gain (largest first), then preset, then current value.
+		«FOR vp : m.varpoints»
+			array[int] of int: «vp.name»_order = [o - 1 | o in arg_sort([-(4 * «IF vp.utilities.empty»0«ELSE»«vp.gain»[i]«ENDIF» + 2 * bool2int(i = «vp.presetParam») + bool2int(i = «vp.current»)) | i in 0..«vp.n»-1])];
+			var 1..«vp.n»: «vp.name»_rank :: no_output;
+			constraint «vp.decision» = «vp.name»_order[«vp.name»_rank];
+		«ENDFOR»
+		solve :: int_search([«FOR vp : m.varpoints SEPARATOR ', '»«vp.name»_rank«ENDFOR»], input_order, indomain_min) maximize «IF scale.lexicographic»miron_tie_scale * miron_gain + miron_tie«ELSE»miron_gain«ENDIF»;
+		'''
+	}
 
 	def private tie(AdaptationModel m) {
 		m.varpoints.map['''2 * bool2int(«decision» = «presetParam») + bool2int(«decision» = «current»)'''].join(" + ")

@@ -37,12 +37,19 @@ public class ModelLoader {
     private final Path workingDir = Path.of("").toAbsolutePath();
 
     public ModelLoader() {
-        // MIRoN's set-up also registers RoQME and BT: a .miron model loads what it imports.
-        Injector miron = MironStandaloneSetup.doSetup();
+        // Only BT up front: `check` of tree files never pays for RoQME and MIRoN (see load).
         Injector bt = BtStandaloneSetup.doSetup();
-        resourceSet = miron.getInstance(XtextResourceSet.class);
+        resourceSet = bt.getInstance(XtextResourceSet.class);
         resourceSet.getResourceFactoryRegistry().getExtensionToFactoryMap()
                 .put("xml", bt.getInstance(XtextResourceFactory.class));
+    }
+
+    /** Sets up what a file's language needs: MIRoN's set-up also registers RoQME (and BT). */
+    private static void setUpFor(File file) {
+        String name = file.getName();
+        if (name.endsWith(".miron") || name.endsWith(".roqme")) {
+            MironStandaloneSetup.doSetup(); // one injector per process: cheap after the first
+        }
     }
 
     public static boolean supports(String fileName) {
@@ -60,6 +67,7 @@ public class ModelLoader {
 
     /** Loads a file (which must exist) and resolves all its references. */
     public Resource load(File file) {
+        setUpFor(file);
         Resource resource = resourceSet.getResource(URI.createFileURI(file.getAbsolutePath()), true);
         EcoreUtil.resolveAll(resource);
         return resource;

@@ -20,7 +20,8 @@ import org.zeromq.ZMQ;
 /**
  * One component's connection to the bus, owned by a single I/O thread (ZeroMQ sockets are not
  * thread-safe): a SUB on the broker's XPUB for inputs and an XPUB connected to the broker's XSUB
- * for outputs. Any thread may {@link #publish}; messages wait in a bounded queue.
+ * for outputs. Any thread may {@link #publish}; messages wait in a bounded queue and a
+ * {@link Wakeup} makes the bus thread send them at once (the poll timeout only paces the loop).
  *
  * <p>Why an XPUB to publish: a PUB drops whatever it sends before the broker's subscription has
  * arrived (slow joiner), which would lose the engine's very first decision. The XPUB sees the
@@ -60,6 +61,8 @@ public final class BusClient implements AutoCloseable {
     private final CountDownLatch ready = new CountDownLatch(1);
     private final AtomicLong dropped = new AtomicLong();
     private final Thread thread;
+    private final Wakeup wakeup = new Wakeup();
+    private volatile long pollMs = 10;
     private volatile boolean running = true;
     private volatile boolean sending;
     private final Map<String, String[]> retained = new LinkedHashMap<>(); // guarded by itself
@@ -95,6 +98,16 @@ public final class BusClient implements AutoCloseable {
         return this;
     }
 
+    /**
+     * Longest sleep of the bus thread between checks of its sockets (default 10 ms). Nothing waits
+     * for it: publishes wake the thread and socket events end the poll; it only bounds the cost of
+     * a missed ZeroMQ wake-up. Tests set it high to prove that.
+     */
+    public BusClient pollInterval(long ms) {
+        this.pollMs = ms;
+        return this;
+    }
+
     public BusClient start() {
         thread.start();
         return this;
@@ -108,6 +121,7 @@ public final class BusClient implements AutoCloseable {
                 LOG.warning(name + ": bus unreachable, dropping oldest queued messages");
             }
         }
+        wakeup.signal();
     }
 
     /**
@@ -163,8 +177,10 @@ public final class BusClient implements AutoCloseable {
             if (in != null) {
                 poller.register(in, ZMQ.Poller.POLLIN);
             }
+            poller.register(wakeup.channel(), ZMQ.Poller.POLLIN);
             while (running) {
-                poller.poll(10);
+                poller.poll(pollMs);
+                wakeup.clear(); // before reading the queue: a later publish wakes the next poll
                 // The poll only paces the loop; non-blocking reads decide (robust to missed wake-ups).
                 byte[] sub;
                 while ((sub = out.recv(ZMQ.DONTWAIT)) != null) {
@@ -183,6 +199,7 @@ public final class BusClient implements AutoCloseable {
             }
         } finally {
             ctx.close();
+            wakeup.close();
         }
     }
 
@@ -287,6 +304,7 @@ public final class BusClient implements AutoCloseable {
     @Override
     public void close() {
         running = false;
+        wakeup.signal();
         try {
             thread.join(3000);
         } catch (InterruptedException e) {

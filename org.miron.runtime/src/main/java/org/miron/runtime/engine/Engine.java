@@ -212,11 +212,15 @@ public final class Engine implements AutoCloseable {
             Integer before = applied.put(vp.name(), idx);
             if (before == null || before != idx) {
                 changed.add(vp.name());
-                send(vp, value);
                 state.setCurrent(vp, idx);
             }
         }
+        // The state first, then the outputs: they leave at once, and whoever sees one may ask.
         appliedValues = values;
+        for (JsonNode name : changed) {
+            VarPoint vp = model.varpoint(name.asText()).orElseThrow();
+            send(vp, (JsonNode) values.get(vp.name()));
+        }
         entry.put("seq", seq);
         entry.put("optimal", r.optimal());
         entry.set("decisions", decisions);

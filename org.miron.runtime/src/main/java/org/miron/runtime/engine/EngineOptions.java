@@ -12,7 +12,8 @@ public final class EngineOptions {
     public String backend = "minizinc";
     public String minizinc = "minizinc";
     public String solver = "gecode";
-    public long timeLimitMs = 2000;
+    /** Solver time limit; 0: automatic, 2 s + 25 ms per varpoint (MiniZincBackend.autoTimeLimitMs). */
+    public long timeLimitMs = 0;
     /** Null: no decision log. */
     public Path decisionLog;
     public long ackTimeoutMs = 1000;

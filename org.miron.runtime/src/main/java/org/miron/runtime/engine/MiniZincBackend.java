@@ -5,6 +5,8 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -13,8 +15,12 @@ import org.miron.runtime.Json;
 
 /**
  * Runs the real {@code minizinc} binary per solve: argument list (no shell), Gecode, a time
- * limit, JSON stream output, parameters as {@code --cmdline-json-data}. A watchdog kills the
+ * limit, JSON stream output, parameters in a JSON data file ({@code -d params.json}: a command-line
+ * argument fails past ≈ 780 varpoints with "Argument list too long"). A watchdog kills the
  * process if it overruns the limit by more than {@code GRACE_MS} (a hung solver or flattening).
+ *
+ * <p>A time limit of 0 or less means automatic: {@link #autoTimeLimitMs}. MiniZinc's limit covers
+ * flattening, which grows with the model (≈ 5 s for 1 000 numeric varpoints with 4 rules each).
  */
 public final class MiniZincBackend implements SolverBackend {
     private static final long GRACE_MS = 3000;
@@ -29,7 +35,16 @@ public final class MiniZincBackend implements SolverBackend {
         this.model = model;
         this.executable = executable;
         this.solver = solver;
-        this.timeLimitMs = timeLimitMs;
+        this.timeLimitMs = timeLimitMs > 0 ? timeLimitMs : autoTimeLimitMs(model.varpoints().size());
+    }
+
+    /** 2 s plus 25 ms per varpoint: room for flattening large models on a slow or busy machine. */
+    public static long autoTimeLimitMs(int varpoints) {
+        return 2000 + 25L * varpoints;
+    }
+
+    public long timeLimitMs() {
+        return timeLimitMs;
     }
 
     @Override
@@ -60,15 +75,15 @@ public final class MiniZincBackend implements SolverBackend {
         }
     }
 
-    List<String> command(Map<String, Object> params) {
+    List<String> command(Path paramsFile) {
         List<String> cmd = new ArrayList<>(List.of(executable, "--solver", solver,
                 "--json-stream", "--output-mode", "json", "--time-limit", Long.toString(timeLimitMs)));
         if (model.dzn() != null) {
             cmd.add("-d");
             cmd.add(model.dzn().toString());
         }
-        cmd.add("--cmdline-json-data");
-        cmd.add(Json.write(params));
+        cmd.add("-d");
+        cmd.add(paramsFile.toString()); // the .json suffix makes MiniZinc read it as JSON data
         cmd.add(model.mzn().toString());
         return cmd;
     }
@@ -76,9 +91,28 @@ public final class MiniZincBackend implements SolverBackend {
     @Override
     public SolveResult solve(Map<String, Object> params) {
         long start = System.nanoTime();
+        Path paramsFile;
+        try {
+            paramsFile = Files.createTempFile("miron-params-", ".json");
+            Files.writeString(paramsFile, Json.write(params));
+        } catch (IOException e) {
+            return SolveResult.failed(SolveResult.Status.ERROR, "cannot write the parameters: " + e.getMessage(), 0);
+        }
+        try {
+            return run(paramsFile, start);
+        } finally {
+            try {
+                Files.deleteIfExists(paramsFile);
+            } catch (IOException ignored) {
+                // a temp file left behind is harmless
+            }
+        }
+    }
+
+    private SolveResult run(Path paramsFile, long start) {
         Process p;
         try {
-            p = new ProcessBuilder(command(params)).start();
+            p = new ProcessBuilder(command(paramsFile)).start();
         } catch (IOException e) {
             return SolveResult.failed(SolveResult.Status.ERROR, "cannot start minizinc: " + e.getMessage(), 0);
         }

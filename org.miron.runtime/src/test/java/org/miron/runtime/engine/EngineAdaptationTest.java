@@ -107,7 +107,8 @@ public class EngineAdaptationTest {
     public void decisionsAreLoggedAsJsonLines() throws Exception {
         f.estimate("power_autonomy", 0.2);
         assertNotNull(f.awaitVariant("task", "dock"));
-        assertTrue(poll(() -> lines().size() >= 2));
+        // The engine publishes the variant before it appends the log line: wait for the line.
+        assertTrue(poll(() -> lines().size() >= 2 && lines().get(lines().size() - 1).contains("\"dock\"")));
         JsonNode last = Json.MAPPER.readTree(lines().get(lines().size() - 1));
         assertEquals("SOLVED", last.path("outcome").asText());
         assertEquals("minizinc", last.path("backend").asText());

@@ -1,0 +1,180 @@
+package org.miron.runtime.bench;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.Json;
+import org.miron.runtime.broker.Broker;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.engine.Backends;
+import org.miron.runtime.engine.Engine;
+import org.miron.runtime.engine.EngineOptions;
+import org.miron.runtime.engine.IoModel;
+import org.miron.runtime.engine.SolveResult;
+import org.miron.runtime.engine.SolverBackend;
+import org.miron.runtime.skill.ParameterChange;
+import org.miron.runtime.skill.SkillInterfaceMock;
+import org.miron.runtime.skill.SkillTable;
+
+/**
+ * Input → variant and input → change-parameter on intralogistics, every component in this JVM but
+ * talking over loopback TCP as separate processes would: a published estimate until the variant
+ * reaches a bus subscriber, or the parameter change reaches the skill interface mock. The solver's
+ * own time inside the engine is measured too (a timing wrapper around the backend), so the
+ * overhead of everything else is the difference.
+ */
+final class EndToEnd {
+    private static final long TIMEOUT_MS = 30_000;
+
+    private EndToEnd() {
+    }
+
+    /**
+     * @param cached answer repeated inputs from a cache instead of the solver: what is left is the
+     *               time of the bus, broker and engine alone
+     */
+    static void run(String backend, Path ioJson, int rounds, boolean cached) throws Exception {
+        Endpoints ep = Endpoints.freeLoopback();
+        IoModel io = IoModel.load(ioJson);
+        EngineOptions o = new EngineOptions(ioJson).endpoints(ep);
+        o.backend = backend;
+        o.timeLimitMs = 0;
+        BlockingQueue<String[]> variants = new LinkedBlockingQueue<>();
+        long[] solveNanos = new long[4 * rounds + 16];
+        int[] solves = { 0 };
+        try (Broker broker = new Broker(ep).start();
+                SkillInterfaceMock skills = new SkillInterfaceMock(ep.skill(), ep.skillEvents(), SkillTable.defaults()).start();
+                BusClient input = new BusClient("bench-input", ep.busIn(), null, List.of(), (t, b) -> { }).start();
+                BusClient watch = new BusClient("bench-watch", ep.busIn(), ep.busOut(), List.of(Topics.VARIANT_PREFIX),
+                        (t, b) -> variants.add(new String[] { t, new String(b, StandardCharsets.UTF_8),
+                                Long.toString(System.nanoTime()) })).start();
+                Engine engine = new Engine(io, timed(Backends.create(backend, io, o), solveNanos, solves, cached), o)
+                        .start()) {
+            input.awaitReady(TIMEOUT_MS);
+            watch.awaitReady(TIMEOUT_MS);
+            take(variants, "task"); // the initial decision
+            Thread.sleep(1000); // every subscription is live
+            variants.clear();
+
+            long[] variant = new long[rounds];
+            long[] variantOverhead = new long[rounds];
+            for (int i = 0; i < rounds; i++) {
+                int first = solves[0];
+                String expect = i % 2 == 0 ? "dock" : "pickDeliverCharge";
+                long t0 = System.nanoTime();
+                estimate(input, "power_autonomy", i % 2 == 0 ? 0.2 : 0.9);
+                String[] got = take(variants, "task");
+                if (!got[1].contains("\"" + expect + "\"")) {
+                    throw new IllegalStateException("unexpected variant " + got[1]);
+                }
+                variant[i] = Long.parseLong(got[2]) - t0;
+                variantOverhead[i] = variant[i] - solveTime(solveNanos, first, solves[0]);
+            }
+            int solvesBefore = solves[0];
+            long[] param = new long[rounds];
+            long[] paramOverhead = new long[rounds];
+            for (int i = 0; i < rounds; i++) {
+                int first = solves[0];
+                int before = skills.history().size();
+                long t0 = System.nanoTime();
+                estimate(input, "safety", i % 2 == 0 ? 0.35 : 0.95);
+                ParameterChange c = skills.awaitChange(x -> skills.history().size() > before, TIMEOUT_MS)
+                        .orElseThrow(() -> new IllegalStateException("no change-parameter"));
+                param[i] = System.nanoTime() - t0;
+                paramOverhead[i] = param[i] - solveTime(solveNanos, first, solves[0]);
+                if (c == null) {
+                    throw new IllegalStateException();
+                }
+            }
+            long[] solver = java.util.Arrays.copyOf(solveNanos, Math.min(solves[0], solveNanos.length));
+            if (cached) {
+                backend += " (cached)";
+            }
+            System.out.printf("%-60s %-9s %s%n", "input -> variant (" + rounds + ")", backend, new Stats(variant).p50p99());
+            System.out.printf("%-60s %-9s %s%n", "input -> change-parameter (" + rounds + ")", backend, new Stats(param).p50p99());
+            System.out.printf("%-60s %-9s %s%n", "  overhead: input -> variant minus that round's solve", backend,
+                    new Stats(variantOverhead).p50p99());
+            System.out.printf("%-60s %-9s %s%n", "  overhead: input -> change-parameter minus that round's solve",
+                    backend, new Stats(paramOverhead).p50p99());
+            System.out.printf("%-60s %-9s %s%n", "  of which solver (backend.solve in the engine, " + solver.length + ")",
+                    backend, new Stats(solver).p50p99());
+            if (solves[0] - solvesBefore < rounds) {
+                System.out.println("  (note: fewer solves than inputs in the parameter run: " + (solves[0] - solvesBefore) + ")");
+            }
+        }
+    }
+
+    /** Total time of the solves numbered [from, to) (the ones a round caused). */
+    private static long solveTime(long[] nanos, int from, int to) {
+        long sum = 0;
+        synchronized (nanos) {
+            for (int i = from; i < Math.min(to, nanos.length); i++) {
+                sum += nanos[i];
+            }
+        }
+        return sum;
+    }
+
+    private static void estimate(BusClient input, String name, double value) {
+        input.publish(Topics.ESTIMATE, Json.write(Map.of("name", name, "namespace", "Intralogistics", "value", value,
+                "time", System.currentTimeMillis())));
+    }
+
+    private static String[] take(BlockingQueue<String[]> q, String vp) throws InterruptedException {
+        long end = System.currentTimeMillis() + TIMEOUT_MS;
+        while (System.currentTimeMillis() < end) {
+            String[] m = q.poll(end - System.currentTimeMillis(), TimeUnit.MILLISECONDS);
+            if (m != null && m[0].equals(Topics.VARIANT_PREFIX + vp)) {
+                return m;
+            }
+        }
+        throw new IllegalStateException("no variant for " + vp);
+    }
+
+    /** The backend, recording how long each solve takes. */
+    private static SolverBackend timed(SolverBackend b, long[] nanos, int[] count, boolean cached) {
+        Map<Map<String, Object>, SolveResult> cache = new java.util.HashMap<>();
+        return new SolverBackend() {
+            @Override
+            public String name() {
+                return b.name();
+            }
+
+            @Override
+            public void check() throws org.miron.runtime.engine.BackendUnavailableException {
+                b.check();
+            }
+
+            @Override
+            public SolveResult solve(Map<String, Object> params) {
+                long t0 = System.nanoTime();
+                SolveResult r = cached ? cache.get(params) : null;
+                if (r == null) {
+                    r = b.solve(params);
+                    if (cached) {
+                        cache.put(new java.util.HashMap<>(params), r);
+                    }
+                }
+                synchronized (nanos) {
+                    if (count[0] < nanos.length) {
+                        nanos[count[0]] = System.nanoTime() - t0;
+                    }
+                    count[0]++;
+                }
+                return r;
+            }
+
+            @Override
+            public void close() {
+                b.close();
+            }
+        };
+    }
+}
