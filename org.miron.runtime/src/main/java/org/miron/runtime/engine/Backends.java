@@ -1,5 +1,6 @@
 package org.miron.runtime.engine;
 
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -30,6 +31,11 @@ public final class Backends {
         return new NativeBackend(model);
     }
 
+    /** The names {@code --backend} accepts, sorted. */
+    public static synchronized List<String> names() {
+        return List.copyOf(FACTORIES.keySet());
+    }
+
     public static synchronized void register(String name, Factory factory) {
         FACTORIES.put(name, factory);
     }
@@ -39,7 +45,7 @@ public final class Backends {
         Factory f = FACTORIES.get(name);
         if (f == null) {
             throw new EngineStartException("unknown backend '" + name + "' (available: "
-                    + String.join(", ", FACTORIES.keySet()) + ")");
+                    + String.join(", ", names()) + ")");
         }
         try {
             return f.create(model, options);

@@ -16,7 +16,6 @@ import org.miron.generator.standalone.BatchGeneration;
 import org.miron.generator.standalone.ModelLoader;
 import org.miron.runtime.engine.Backends;
 import org.miron.runtime.engine.EngineOptions;
-import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.SolveResult;
@@ -33,7 +32,7 @@ public final class Bench {
     private static final int[] SIZES = { 5, 50, 200, 1000 };
 
     public static void main(String[] args) throws Exception {
-        List<String> backends = args.length > 0 && !args[0].isBlank() ? List.of(args[0].split(",")) : known();
+        List<String> backends = args.length > 0 && !args[0].isBlank() ? List.of(args[0].split(",")) : Backends.names();
         int rounds = args.length > 1 ? Integer.parseInt(args[1]) : 40;
         Path dir = Files.createTempDirectory("miron-bench");
         Path root = Path.of(System.getProperty("miron.root", ".")).toAbsolutePath().normalize();
@@ -106,23 +105,6 @@ public final class Bench {
         }
         System.out.printf("%-36s %-9s %s %12.1f KiB %6d/%d%n", label + " (" + rounds + " rounds)", backend,
                 new Stats(times).p50p99(), allocated / 1024.0 / rounds, notOptimal, rounds);
-    }
-
-    /**
-     * The backend names Backends knows. It has no listing method (it is being extended on another
-     * branch), so they are read from its answer to an unknown name: "... (available: a, b)".
-     */
-    static List<String> known() {
-        try {
-            Backends.create("\u0000", null, new EngineOptions(null));
-        } catch (EngineStartException e) {
-            String msg = e.getMessage();
-            int i = msg.indexOf("available: ");
-            if (i >= 0) {
-                return List.of(msg.substring(i + 11, msg.lastIndexOf(')')).split(",\\s*"));
-            }
-        }
-        return List.of("minizinc");
     }
 
     static Path generateExample(Path miron, Path out) throws Exception {
