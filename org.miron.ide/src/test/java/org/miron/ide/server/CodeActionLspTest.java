@@ -5,7 +5,6 @@ import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
 import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
@@ -17,27 +16,13 @@ import org.eclipse.lsp4j.Diagnostic;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.eclipse.lsp4j.TextEdit;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
-import org.junit.After;
-import org.junit.Before;
+import org.junit.Rule;
 import org.junit.Test;
 
 /** Quick fixes from issue codes and issue data, asked for and applied as an editor does. */
 public class CodeActionLspTest {
-    private Path workspace;
-    private LspClient client;
-
-    @Before
-    public void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
-        client = new LspClient();
-        client.initialize(workspace);
-    }
-
-    @After
-    public void tearDown() throws Exception {
-        client.close();
-        Workspaces.delete(workspace);
-    }
+    @Rule
+    public final ExampleSession session = new ExampleSession("intralogistics");
 
     private static String code(Diagnostic d) {
         return d.getCode() == null ? null : d.getCode().getLeft();
@@ -45,10 +30,10 @@ public class CodeActionLspTest {
 
     /** Opens the buffer, waits for the diagnostic with the code, and applies the action with the title. */
     private String fix(String file, String text, String code, String title) throws Exception {
-        String uri = client.open(workspace.resolve(file), text);
-        Diagnostic diagnostic = client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> code.equals(code(d))))
+        String uri = session.client.open(session.workspace.resolve(file), text);
+        Diagnostic diagnostic = session.client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> code.equals(code(d))))
                 .stream().filter(d -> code.equals(code(d))).findFirst().get();
-        List<Either<Command, CodeAction>> actions = client.server().getTextDocumentService()
+        List<Either<Command, CodeAction>> actions = session.client.server().getTextDocumentService()
                 .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), diagnostic.getRange(),
                         new CodeActionContext(List.of(diagnostic))))
                 .get(60, TimeUnit.SECONDS);
@@ -58,14 +43,14 @@ public class CodeActionLspTest {
         List<TextEdit> edits = action.getEdit().getChanges().get(uri);
         assertFalse(edits.isEmpty());
         String fixed = TextEdits.apply(text, edits);
-        client.change(uri, fixed);
-        client.awaitDiagnostics(uri, ds -> ds.stream().noneMatch(d -> code.equals(code(d))));
+        session.client.change(uri, fixed);
+        session.client.awaitDiagnostics(uri, ds -> ds.stream().noneMatch(d -> code.equals(code(d))));
         return fixed;
     }
 
     @Test
     public void oldRetrySpellingIsRenamedInBothTags() throws Exception {
-        String text = Files.readString(workspace.resolve("intralogistics.bt")).replace(
+        String text = Files.readString(session.workspace.resolve("intralogistics.bt")).replace(
                 "<Action ID=\"objectdrop\" obj_index=\"-1\"/>",
                 "<RetryUntilSuccesful num_attempts=\"2\"><Action ID=\"objectdrop\" obj_index=\"-1\"/></RetryUntilSuccesful>");
         String fixed = fix("intralogistics.bt", text, "bt.retry-old-spelling", "Change to RetryUntilSuccessful");
@@ -75,26 +60,26 @@ public class CodeActionLspTest {
 
     @Test
     public void unknownNameOffersTheClosestOne() throws Exception {
-        String text = Files.readString(workspace.resolve("intralogistics.miron")).replace("affects roqme.safety++",
+        String text = Files.readString(session.workspace.resolve("intralogistics.miron")).replace("affects roqme.safety++",
                 "affects roqme.safty++");
         String fixed = fix("intralogistics.miron", text, "roqme.unknown-reference", "Change to roqme.safety");
-        assertEquals(Files.readString(workspace.resolve("intralogistics.miron")), fixed);
+        assertEquals(Files.readString(session.workspace.resolve("intralogistics.miron")), fixed);
     }
 
     @Test
     public void unknownSubtreeKeepsTheQuotes() throws Exception {
-        String text = Files.readString(workspace.resolve("intralogistics.bt")).replace(
+        String text = Files.readString(session.workspace.resolve("intralogistics.bt")).replace(
                 "<SubTreePlus ID=\"PickDeliverCharge\"", "<SubTreePlus ID=\"PickDeliverChrge\"");
         String fixed = fix("intralogistics.bt", text, "bt.unknown-subtree", "Change to PickDeliverCharge");
-        assertEquals(Files.readString(workspace.resolve("intralogistics.bt")), fixed);
+        assertEquals(Files.readString(session.workspace.resolve("intralogistics.bt")), fixed);
     }
 
     @Test
     public void missingImportIsAdded() throws Exception {
-        String original = Files.readString(workspace.resolve("intralogistics.miron"));
+        String original = Files.readString(session.workspace.resolve("intralogistics.miron"));
         String text = original.replace("import \"intralogistics.roqme\" as roqme\n", "");
-        String uri = client.open(workspace.resolve("intralogistics.miron"), text);
-        Diagnostic missing = client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> "roqme.missing-import".equals(code(d))))
+        String uri = session.client.open(session.workspace.resolve("intralogistics.miron"), text);
+        Diagnostic missing = session.client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> "roqme.missing-import".equals(code(d))))
                 .stream().filter(d -> "roqme.missing-import".equals(code(d))).findFirst().get();
         // The issue data: the import line to add, then the reference as written with it.
         String importLine = ((com.google.gson.JsonArray) missing.getData()).get(0).getAsString();

@@ -16,33 +16,19 @@ import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.eclipse.lsp4j.DidChangeWatchedFilesParams;
 import org.eclipse.lsp4j.FileChangeType;
 import org.eclipse.lsp4j.FileEvent;
-import org.junit.After;
-import org.junit.Before;
+import org.junit.Rule;
 import org.junit.Test;
 import org.miron.generator.standalone.ModelLoader;
 
 /** The server's diagnostics are `miron check`'s, and follow the files on disk. */
 public class DiagnosticsLspTest {
-    private Path workspace;
-    private LspClient client;
-
-    @Before
-    public void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
-        client = new LspClient();
-        client.initialize(workspace);
-    }
-
-    @After
-    public void tearDown() throws Exception {
-        client.close();
-        Workspaces.delete(workspace);
-    }
+    @Rule
+    public final ExampleSession session = new ExampleSession("intralogistics");
 
     @Test
     public void sameMessagesPositionsAndCodesAsMironCheck() throws Exception {
-        Path miron = workspace.resolve("intralogistics.miron");
-        Path bt = workspace.resolve("intralogistics.bt");
+        Path miron = session.workspace.resolve("intralogistics.miron");
+        Path bt = session.workspace.resolve("intralogistics.bt");
         Files.writeString(miron, Files.readString(miron).replace("roqme.safety++", "roqme.safty++")
                 .replace("implies task = task::dock", "implies task = task::dok"));
         Files.writeString(bt, Files.readString(bt).replace("<SubTreePlus ID=\"PickDeliverCharge\"",
@@ -55,12 +41,12 @@ public class DiagnosticsLspTest {
         assertFalse(expected.isEmpty());
 
         for (Path file : List.of(miron, bt)) {
-            String uri = client.open(file);
+            String uri = session.client.open(file);
             Set<String> fromCheck = expected.stream()
                     .filter(d -> Path.of(d.file()).toAbsolutePath().normalize().equals(file.toAbsolutePath().normalize()))
                     .map(d -> d.line() + ":" + d.column() + " " + d.severity() + " [" + d.code() + "] " + d.message())
                     .collect(Collectors.toCollection(TreeSet::new));
-            List<Diagnostic> published = client.awaitDiagnostics(uri, ds -> ds.size() >= fromCheck.size());
+            List<Diagnostic> published = session.client.awaitDiagnostics(uri, ds -> ds.size() >= fromCheck.size());
             Set<String> fromServer = published.stream()
                     .filter(d -> d.getSeverity() == DiagnosticSeverity.Error || d.getSeverity() == DiagnosticSeverity.Warning)
                     .map(d -> (d.getRange().getStart().getLine() + 1) + ":" + (d.getRange().getStart().getCharacter() + 1)
@@ -74,19 +60,19 @@ public class DiagnosticsLspTest {
 
     @Test
     public void anImportedFileDeletedAndCreatedOnDisk() throws Exception {
-        Path roqme = workspace.resolve("intralogistics.roqme");
-        Path moved = workspace.resolve("elsewhere.txt");
-        String mironUri = client.open(workspace.resolve("intralogistics.miron"));
-        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+        Path roqme = session.workspace.resolve("intralogistics.roqme");
+        Path moved = session.workspace.resolve("elsewhere.txt");
+        String mironUri = session.client.open(session.workspace.resolve("intralogistics.miron"));
+        session.client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
         Files.move(roqme, moved);
-        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+        session.client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
                 List.of(new FileEvent(LspClient.uri(roqme), FileChangeType.Deleted))));
-        client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
+        session.client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
 
         Files.move(moved, roqme);
-        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+        session.client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
                 List.of(new FileEvent(LspClient.uri(roqme), FileChangeType.Created))));
-        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+        session.client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
     }
 
     @Test
@@ -106,21 +92,21 @@ public class DiagnosticsLspTest {
 
     @Test
     public void aFileChangedOnDiskRevalidatesItsImporters() throws Exception {
-        Path roqme = workspace.resolve("intralogistics.roqme");
-        String mironUri = client.open(workspace.resolve("intralogistics.miron"));
-        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+        Path roqme = session.workspace.resolve("intralogistics.roqme");
+        String mironUri = session.client.open(session.workspace.resolve("intralogistics.miron"));
+        session.client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
 
         // The .roqme is not open: only the file on disk and the watcher's event tell the server.
         String original = Files.readString(roqme);
         Files.writeString(roqme, original.replace("property safety ", "property safetyX "));
-        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+        session.client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
                 List.of(new FileEvent(LspClient.uri(roqme), FileChangeType.Changed))));
-        List<Diagnostic> broken = client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
+        List<Diagnostic> broken = session.client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
         assertTrue(broken.toString(), broken.stream().anyMatch(d -> LspClient.message(d).contains("safety")));
 
         Files.writeString(roqme, original);
-        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+        session.client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
                 List.of(new FileEvent(LspClient.uri(roqme), FileChangeType.Changed))));
-        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+        session.client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
     }
 }

@@ -10,8 +10,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.eclipse.lsp4j.ExecuteCommandParams;
-import org.junit.After;
-import org.junit.Before;
+import org.junit.Rule;
 import org.junit.Test;
 
 import com.google.gson.Gson;
@@ -19,37 +18,24 @@ import com.google.gson.JsonObject;
 
 /** workspace/executeCommand miron.generate through the client. */
 public class GenerateLspTest {
-    private Path workspace;
-    private LspClient client;
-
-    @Before
-    public void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
-        client = new LspClient();
-        client.initialize(workspace);
-    }
-
-    @After
-    public void tearDown() throws Exception {
-        client.close();
-        Workspaces.delete(workspace);
-    }
+    @Rule
+    public final ExampleSession session = new ExampleSession("intralogistics");
 
     private JsonObject generate(Object... arguments) throws Exception {
-        Object answer = client.server().getWorkspaceService()
+        Object answer = session.client.server().getWorkspaceService()
                 .executeCommand(new ExecuteCommandParams("miron.generate", List.of(arguments)))
                 .get(120, TimeUnit.SECONDS);
-        // The client's JSON-RPC layer hands over an untyped answer: look at it as JSON again.
+        // The session.client's JSON-RPC layer hands over an untyped answer: look at it as JSON again.
         return new Gson().toJsonTree(answer).getAsJsonObject();
     }
 
     @Test
     public void generatesTheExampleNextToTheModel() throws Exception {
-        String uri = client.open(workspace.resolve("intralogistics.miron"));
-        client.awaitDiagnostics(uri, d -> true);
+        String uri = session.client.open(session.workspace.resolve("intralogistics.miron"));
+        session.client.awaitDiagnostics(uri, d -> true);
         JsonObject result = generate(uri);
         assertTrue(result.toString(), result.get("ok").getAsBoolean());
-        Path generated = workspace.resolve("generated");
+        Path generated = session.workspace.resolve("generated");
         for (String name : List.of("intralogistics.ext.xml", "intralogistics.mzn", "intralogistics.dzn", "intralogistics.io.json")) {
             assertTrue(name, Files.isRegularFile(generated.resolve(name)));
             assertTrue(result.toString(), result.get("written").toString().contains(name));
@@ -59,14 +45,14 @@ public class GenerateLspTest {
 
     @Test
     public void unsavedErrorsStopTheGeneration() throws Exception {
-        Path miron = workspace.resolve("intralogistics.miron");
-        String uri = client.open(miron, Files.readString(miron).replace("roqme.safety++", "roqme.safty++"));
-        client.awaitDiagnostics(uri, IntralogisticsLspTest::hasErrors);
+        Path miron = session.workspace.resolve("intralogistics.miron");
+        String uri = session.client.open(miron, Files.readString(miron).replace("roqme.safety++", "roqme.safty++"));
+        session.client.awaitDiagnostics(uri, IntralogisticsLspTest::hasErrors);
         JsonObject result = generate(uri, "out");
         assertFalse(result.get("ok").getAsBoolean());
         assertTrue(result.get("message").getAsString(), result.get("message").getAsString().contains("safty"));
         assertEquals(0, result.getAsJsonArray("written").size());
-        assertFalse(Files.exists(workspace.resolve("out")));
+        assertFalse(Files.exists(session.workspace.resolve("out")));
     }
 
     @Test

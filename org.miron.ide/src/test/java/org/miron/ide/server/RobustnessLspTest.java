@@ -17,44 +17,30 @@ import org.eclipse.lsp4j.FileEvent;
 import org.eclipse.lsp4j.HoverParams;
 import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
-import org.junit.After;
-import org.junit.Before;
+import org.junit.Rule;
 import org.junit.Test;
 
 /** Bad input never kills the server: every request still gets an answer afterwards. */
 public class RobustnessLspTest {
-    private Path workspace;
-    private LspClient client;
-
-    @Before
-    public void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
-        client = new LspClient();
-        client.initialize(workspace);
-    }
-
-    @After
-    public void tearDown() throws Exception {
-        client.close();
-        Workspaces.delete(workspace);
-    }
+    @Rule
+    public final ExampleSession session = new ExampleSession("intralogistics");
 
     /** The server still answers: diagnostics of a fresh file arrive and a request returns. */
     private void assertAlive() throws Exception {
-        Path probe = workspace.resolve("probe.roqme");
-        String uri = client.open(probe, "roqme Probe\ncontext C : boolean\n");
-        client.awaitDiagnostics(uri, d -> true);
-        assertNotNull(client.server().getTextDocumentService()
+        Path probe = session.workspace.resolve("probe.roqme");
+        String uri = session.client.open(probe, "roqme Probe\ncontext C : boolean\n");
+        session.client.awaitDiagnostics(uri, d -> true);
+        assertNotNull(session.client.server().getTextDocumentService()
                 .documentSymbol(new DocumentSymbolParams(new TextDocumentIdentifier(uri))).get(60, TimeUnit.SECONDS));
     }
 
     @Test
     public void malformedFiles() throws Exception {
-        String bt = client.open(workspace.resolve("bad.bt"), "<root><BehaviorTree ID=\"x\"><Sequence><TreeNodesModel>\n<<<'\"");
-        assertTrue(IntralogisticsLspTest.hasErrors(client.awaitDiagnostics(bt, IntralogisticsLspTest::hasErrors)));
-        String miron = client.open(workspace.resolve("bad.miron"), "import import @varpoint ::: { } affects ++");
-        client.awaitDiagnostics(miron, IntralogisticsLspTest::hasErrors);
-        client.server().getTextDocumentService()
+        String bt = session.client.open(session.workspace.resolve("bad.bt"), "<root><BehaviorTree ID=\"x\"><Sequence><TreeNodesModel>\n<<<'\"");
+        assertTrue(IntralogisticsLspTest.hasErrors(session.client.awaitDiagnostics(bt, IntralogisticsLspTest::hasErrors)));
+        String miron = session.client.open(session.workspace.resolve("bad.miron"), "import import @varpoint ::: { } affects ++");
+        session.client.awaitDiagnostics(miron, IntralogisticsLspTest::hasErrors);
+        session.client.server().getTextDocumentService()
                 .completion(new CompletionParams(new TextDocumentIdentifier(miron), new Position(0, 10)))
                 .get(60, TimeUnit.SECONDS);
         assertAlive();
@@ -66,22 +52,22 @@ public class RobustnessLspTest {
         for (int i = 0; i < 5000; i++) {
             text.append("/** Context ").append(i).append(". */\ncontext C").append(i).append(" : number (0:100)\n");
         }
-        String uri = client.open(workspace.resolve("huge.roqme"), text.toString());
-        client.awaitDiagnostics(uri, d -> true);
+        String uri = session.client.open(session.workspace.resolve("huge.roqme"), text.toString());
+        session.client.awaitDiagnostics(uri, d -> true);
         assertAlive();
     }
 
     @Test
     public void positionsOutsideTheDocument() throws Exception {
-        String uri = client.open(workspace.resolve("intralogistics.miron"));
-        client.awaitDiagnostics(uri, d -> true);
+        String uri = session.client.open(session.workspace.resolve("intralogistics.miron"));
+        session.client.awaitDiagnostics(uri, d -> true);
         TextDocumentIdentifier doc = new TextDocumentIdentifier(uri);
         for (Position outside : List.of(new Position(5000, 3), new Position(2, 5000), new Position(-1, -1))) {
             // Empty answers, not error responses.
-            assertTrue(IntralogisticsLspTest.labels(client.server().getTextDocumentService()
+            assertTrue(IntralogisticsLspTest.labels(session.client.server().getTextDocumentService()
                     .completion(new CompletionParams(doc, outside)).get(60, TimeUnit.SECONDS)).isEmpty());
-            client.server().getTextDocumentService().hover(new HoverParams(doc, outside)).get(60, TimeUnit.SECONDS);
-            assertTrue(client.server().getTextDocumentService().definition(new DefinitionParams(doc, outside))
+            session.client.server().getTextDocumentService().hover(new HoverParams(doc, outside)).get(60, TimeUnit.SECONDS);
+            assertTrue(session.client.server().getTextDocumentService().definition(new DefinitionParams(doc, outside))
                     .get(60, TimeUnit.SECONDS).getLeft().isEmpty());
         }
         assertAlive();
@@ -89,26 +75,26 @@ public class RobustnessLspTest {
 
     @Test
     public void fileDeletedWhileOpen() throws Exception {
-        Path bt = workspace.resolve("intralogistics.bt");
-        String btUri = client.open(bt);
-        String mironUri = client.open(workspace.resolve("intralogistics.miron"));
-        client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
+        Path bt = session.workspace.resolve("intralogistics.bt");
+        String btUri = session.client.open(bt);
+        String mironUri = session.client.open(session.workspace.resolve("intralogistics.miron"));
+        session.client.awaitDiagnostics(mironUri, d -> !IntralogisticsLspTest.hasErrors(d));
         Files.delete(bt);
-        client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
+        session.client.server().getWorkspaceService().didChangeWatchedFiles(new DidChangeWatchedFilesParams(
                 List.of(new FileEvent(btUri, FileChangeType.Deleted))));
-        settle(client.server().getTextDocumentService().hover(
+        settle(session.client.server().getTextDocumentService().hover(
                 new HoverParams(new TextDocumentIdentifier(btUri), new Position(12, 20))));
         assertAlive();
     }
 
     @Test
     public void importCycle() throws Exception {
-        String a = client.open(workspace.resolve("a.roqme"), "import \"b.roqme\"\nroqme A\ncontext X : boolean\n");
-        String b = client.open(workspace.resolve("b.roqme"), "import \"a.roqme\"\nroqme B\ncontext Y : boolean := a.X\n");
-        client.awaitDiagnostics(a, d -> true);
-        client.awaitDiagnostics(b, d -> true);
-        String m = client.open(workspace.resolve("c.miron"), "import \"c.miron\" as c\nimport \"a.roqme\" as a\n");
-        client.awaitDiagnostics(m, d -> true);
+        String a = session.client.open(session.workspace.resolve("a.roqme"), "import \"b.roqme\"\nroqme A\ncontext X : boolean\n");
+        String b = session.client.open(session.workspace.resolve("b.roqme"), "import \"a.roqme\"\nroqme B\ncontext Y : boolean := a.X\n");
+        session.client.awaitDiagnostics(a, d -> true);
+        session.client.awaitDiagnostics(b, d -> true);
+        String m = session.client.open(session.workspace.resolve("c.miron"), "import \"c.miron\" as c\nimport \"a.roqme\" as a\n");
+        session.client.awaitDiagnostics(m, d -> true);
         assertAlive();
     }
 
@@ -116,7 +102,7 @@ public class RobustnessLspTest {
     public void clientWithoutWorkspaceFolder() throws Exception {
         try (LspClient single = new LspClient()) {
             single.initializeWithoutWorkspace();
-            String uri = single.open(workspace.resolve("intralogistics.miron"));
+            String uri = single.open(session.workspace.resolve("intralogistics.miron"));
             single.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
         }
     }
