@@ -58,6 +58,11 @@ public final class CronSchedule {
     /** The first problem of a cron string, or null when it is a valid five-field schedule. */
     public static Problem check(String cron) {
         Matcher tokens = TOKEN.matcher(cron);
+        if (tokens.find() && tokens.group().startsWith("@")) {
+            return new Problem("macros such as @daily are not cron fields: write the five fields, e.g. \"0 0 * * *\"",
+                    tokens.start(), tokens.group().length());
+        }
+        tokens.reset();
         int count = 0;
         while (tokens.find()) {
             if (count == FIELDS.size()) {
