@@ -157,6 +157,43 @@ public class InMemoryGenerationTest {
         assertNothingWritten(model, "cannot generate MiniZinc");
     }
 
+    /** MiniZinc knows nothing of RoQME's timers and observations: they leave the generated files unchanged. */
+    @Test
+    public void timersAndObservationsLeaveTheGeneratedFilesUnchanged() throws IOException {
+        String timers = """
+                context crowded : boolean
+                property comfort
+                timer tick := 10 minutes
+                timer morning := schedule("0 8 * * MON-FRI")
+                timer cooldown onetime paused := 30 seconds
+                observation o1 : tick while (crowded) undermines comfort
+                observation o2 : morning or cooldown reinforces comfort
+                observation o3 : crowded { starts cooldown stops tick resumes tick }
+                """;
+        InMemoryFileSystemAccess plain = new InMemoryFileSystemAccess();
+        new MironGenerator().doGenerate(models("memory:/", MODEL), plain, new GeneratorContext());
+        InMemoryFileSystemAccess withTimers = new InMemoryFileSystemAccess();
+        Resource model = models("memory:/", MODEL + timers);
+        assertEquals(List.of(), model.getErrors());
+        new MironGenerator().doGenerate(model, withTimers, new GeneratorContext());
+        assertEquals(plain.getTextFiles().keySet(), withTimers.getTextFiles().keySet());
+        for (String name : List.of("model.mzn", "model.dzn", "model.ext.xml")) {
+            assertEquals(name, file(plain, name).toString(), file(withTimers, name).toString());
+        }
+    }
+
+    /** A rule that reads a timer passes validation (event & boolean is boolean) but has no MiniZinc meaning. */
+    @Test
+    public void aRuleReadingATimerIsAGenerationError() throws IOException {
+        Resource model = models("inmemory:/", MODEL + """
+                context crowded : boolean
+                timer tick := 10 minutes
+                rule r : crowded & tick implies v = v::b
+                """);
+        assertEquals(List.of(), model.getErrors());
+        assertNothingWritten(model, "'tick' is none of them");
+    }
+
     @Test
     public void aModelThatDoesNotLinkWritesNothing() throws IOException {
         assertNothingWritten(models("inmemory:/", MODEL.replace("bt.last", "bt.NoSuchNode")), "NoSuchNode");

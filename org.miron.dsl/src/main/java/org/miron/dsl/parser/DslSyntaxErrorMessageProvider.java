@@ -27,6 +27,13 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
                     + " (model header, import, type, context, param, var, timer, beliefvar, property, observation,"
                     + " varpoint or rule); write /* ... */ for other comments", SYNTAX_ERROR);
         }
+        String lexer = context.getDefaultMessage();
+        if (e == null && lexer != null && lexer.contains("character '<EOF>'")) {
+            // the lexer reached the end of the file inside a token: only comments and strings span text
+            return new SyntaxErrorMessage(lexer.contains("expecting '\"'")
+                    ? "the file ends inside a string: close it with \""
+                    : "the file ends inside a comment: close it with */", SYNTAX_ERROR);
+        }
         SyntaxErrorMessage message = super.getSyntaxErrorMessage(context);
         String text = readable(message.getMessage(), isKeyword(context));
         if (text != null && text.startsWith("missing EOF at ")) {

@@ -31,7 +31,7 @@ public final class ExprType {
         return kind == Kind.UNKNOWN;
     }
 
-    /** Numbers and times mix freely (a timer compared with 5 seconds, a time divided by 2). */
+    /** Numbers and times mix freely (a time context compared with 5 seconds, a time divided by 2). */
     public boolean isNumeric() {
         return kind == Kind.NUMBER || kind == Kind.TIME || isUnknown();
     }

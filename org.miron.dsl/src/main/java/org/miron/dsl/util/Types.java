@@ -6,6 +6,7 @@ import org.eclipse.emf.ecore.EObject;
 import org.miron.dsl.roqme.BeliefExpression;
 import org.miron.dsl.roqme.BeliefVariable;
 import org.miron.dsl.roqme.BinaryExpression;
+import org.miron.dsl.roqme.BinaryOperator;
 import org.miron.dsl.roqme.BooleanType;
 import org.miron.dsl.roqme.BooleanValue;
 import org.miron.dsl.roqme.ConditionalExpression;
@@ -74,8 +75,11 @@ public final class Types {
         } else if (e instanceof UnaryExpression) {
             UnaryExpression u = (UnaryExpression) e;
             switch (u.getOperator()) {
-            case MINUS:
-                return typeOf(u.getTerm()).kind == ExprType.Kind.TIME ? ExprType.TIME : ExprType.NUMBER;
+            case MINUS: {
+                ExprType t = typeOf(u.getTerm());
+                // a wrong operand is reported on the operator; unknown keeps it from being reported again
+                return t.kind == ExprType.Kind.TIME ? ExprType.TIME : t.isNumeric() ? ExprType.NUMBER : ExprType.UNKNOWN;
+            }
             default:
                 return ExprType.BOOLEAN;
             }
@@ -88,7 +92,10 @@ public final class Types {
             case DIVIDE:
                 ExprType l = typeOf(b.getLeft());
                 ExprType r = typeOf(b.getRight());
-                return l.kind == ExprType.Kind.TIME && r.kind == ExprType.Kind.TIME ? ExprType.TIME : ExprType.NUMBER;
+                if (!l.isNumeric() || !r.isNumeric()) {
+                    return ExprType.UNKNOWN; // reported on the operator
+                }
+                return arithmetic(b.getOperator(), l.kind == ExprType.Kind.TIME, r.kind == ExprType.Kind.TIME);
             default:
                 return ExprType.BOOLEAN;
             }
@@ -112,6 +119,22 @@ public final class Types {
         return ExprType.UNKNOWN;
     }
 
+    /** Times as physics has them: t + t, t - t, 2 * t and t / 2 are times; t / t is a number. */
+    private static ExprType arithmetic(BinaryOperator op, boolean leftTime, boolean rightTime) {
+        boolean time;
+        switch (op) {
+        case TIMES:
+            time = leftTime != rightTime;
+            break;
+        case DIVIDE:
+            time = leftTime && !rightTime;
+            break;
+        default:
+            time = leftTime || rightTime;
+        }
+        return time ? ExprType.TIME : ExprType.NUMBER;
+    }
+
     /** The type of the values a variable holds. */
     public static ExprType typeOf(Variable v) {
         if (v == null || v.eIsProxy()) {
@@ -123,7 +146,7 @@ public final class Types {
         } else if (v instanceof BeliefVariable) {
             return ExprType.NUMBER;
         } else if (v instanceof Timer) {
-            return ExprType.TIME;
+            return ExprType.EVENT; // a timer fires; its period is not a value
         }
         return ExprType.UNKNOWN;
     }

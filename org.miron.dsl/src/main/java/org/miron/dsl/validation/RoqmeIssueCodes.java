@@ -63,8 +63,21 @@ public final class RoqmeIssueCodes {
     public static final String REFERENCE_OUT_OF_RANGE = "roqme.reference-out-of-range";
     /** A survival time that is zero or negative. */
     public static final String SURVIVAL_NOT_POSITIVE = "roqme.survival-not-positive";
-    /** A timer or observation pattern that is neither boolean nor an event. */
+    /** An observation pattern that is neither boolean nor an event. */
     public static final String PATTERN_TYPE = "roqme.pattern-type";
+
+    // ------------------------------------------------------------------ timers and schedules
+
+    /** A timer defined by something other than a period (a time) or schedule("cron"). */
+    public static final String TIMER_DEFINITION = "roqme.timer-definition";
+    /** A timer period that is zero or negative. */
+    public static final String PERIOD_NOT_POSITIVE = "roqme.period-not-positive";
+    /** schedule(...) without a valid five-field cron string; reported at the wrong field. */
+    public static final String INVALID_SCHEDULE = "roqme.invalid-schedule";
+    /** Warning: an offset on a schedule timer, which has no effect. */
+    public static final String SCHEDULE_OFFSET = "roqme.schedule-offset";
+    /** Warning: a paused timer that no observation of its file starts or resumes. */
+    public static final String PAUSED_TIMER_NEVER_STARTED = "roqme.paused-timer-never-started";
 
     // ------------------------------------------------------------------ expressions
 

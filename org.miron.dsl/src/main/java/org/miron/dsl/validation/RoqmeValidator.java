@@ -29,7 +29,6 @@ import org.miron.dsl.roqme.Property;
 import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.roqme.Sets;
 import org.miron.dsl.roqme.TimeValue;
-import org.miron.dsl.roqme.Timer;
 import org.miron.dsl.roqme.TypedVariable;
 import org.miron.dsl.roqme.Var;
 import org.miron.dsl.scoping.ImportedResources;
@@ -42,10 +41,10 @@ import com.google.inject.Inject;
 
 /**
  * RoQME's checks: imports, data types, definitions and defaults against declared types, beliefs,
- * times, observations; names and expressions are checked by the composed check sets. MIRoN's
+ * times, observations; names, expressions and timers are checked by the composed check sets. MIRoN's
  * validator extends this one, so every RoQME check also runs on MIRoN models.
  */
-@ComposedChecks(validators = { NamingChecks.class, ExpressionChecks.class })
+@ComposedChecks(validators = { NamingChecks.class, ExpressionChecks.class, TimerChecks.class })
 public class RoqmeValidator extends AbstractRoqmeValidator {
 
     private static final RoqmePackage R = RoqmePackage.eINSTANCE;
@@ -209,14 +208,6 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                     : "'" + Names.ownerName(time) + "'";
             error("survival of " + owner + " must be positive, not " + fmt(time.getValue()), time, R.getTimeValue_Value(),
                     SURVIVAL_NOT_POSITIVE);
-        }
-    }
-
-    @Check
-    public void checkTimer(Timer timer) {
-        if (timer.getCondition() != null && !Types.typeOf(timer.getCondition()).isEventLike()) {
-            error("timer '" + timer.getName() + "' needs a boolean or event pattern, not "
-                    + Types.typeOf(timer.getCondition()), timer, R.getTimer_Condition(), PATTERN_TYPE);
         }
     }
 

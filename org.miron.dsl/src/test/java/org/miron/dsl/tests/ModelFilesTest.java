@@ -27,13 +27,15 @@ import org.junit.runners.Parameterized.Parameters;
 /**
  * Every model under src/test/resources/models/{roqme,miron}/{valid,invalid}. A valid model has no
  * error and no unresolved reference. An invalid model marks each expected error on its line with a
- * comment "//! part of the message"; the errors found must be exactly those, on those lines.
- * Files under models/lib are only imported by the others.
+ * comment "//! part of the message"; the errors found must be exactly those, on those lines. In
+ * both kinds, "//? part of the message" marks an expected warning, and the warnings of the file
+ * must be exactly the marked ones. Files under models/lib are only imported by the others.
  */
 @RunWith(Parameterized.class)
 public class ModelFilesTest {
 
-    private static final Pattern MARKER = Pattern.compile("//!\\s*(.+?)\\s*$");
+    private static final Pattern ERROR_MARKER = Pattern.compile("//!\\s*(.+?)\\s*$");
+    private static final Pattern WARNING_MARKER = Pattern.compile("//\\?\\s*(.+?)\\s*$");
 
     @Parameters(name = "{0}")
     public static Collection<Object[]> files() throws IOException {
@@ -57,25 +59,44 @@ public class ModelFilesTest {
     @Test
     public void check() throws IOException {
         Resource resource = Models.load(file);
-        List<Issue> errors = Models.validateAll(resource).stream()
-                .filter(i -> i.getSeverity() == Severity.ERROR).collect(Collectors.toList());
+        List<Issue> issues = Models.validateAll(resource);
+        List<Issue> errors = issues.stream().filter(i -> i.getSeverity() == Severity.ERROR).collect(Collectors.toList());
+        List<String> lines = Files.readAllLines(file.toPath(), StandardCharsets.UTF_8);
+        List<String> problems = new ArrayList<>();
+        expect(WARNING_MARKER, lines, inThisFile(issues, Severity.WARNING), "warning", problems);
         boolean valid = file.getParentFile().getName().equals("valid");
         if (valid) {
             if (!errors.isEmpty()) {
-                fail("unexpected errors:\n" + errors.stream().map(Models::format).collect(Collectors.joining("\n")));
+                problems.add("unexpected errors:\n" + errors.stream().map(Models::format).collect(Collectors.joining("\n")));
             }
             List<String> unresolved = Models.unresolved(resource);
             assertTrue("unresolved references: " + unresolved, unresolved.isEmpty());
-            return;
+        } else {
+            int errorMarkers = expect(ERROR_MARKER, lines, inThisFile(issues, Severity.ERROR), "error", problems);
+            assertTrue(file + " has no //! marker", errorMarkers > 0);
         }
-        List<String> problems = new ArrayList<>();
-        List<Issue> remaining = errors.stream()
+        if (!problems.isEmpty()) {
+            fail(String.join("\n", problems) + "\nall issues:\n"
+                    + issues.stream().map(Models::format).collect(Collectors.joining("\n")));
+        }
+    }
+
+    private List<Issue> inThisFile(List<Issue> issues, Severity severity) {
+        return issues.stream().filter(i -> i.getSeverity() == severity)
                 .filter(i -> i.getUriToProblem().trimFragment().lastSegment().equals(file.getName()))
                 .collect(Collectors.toList());
-        List<String> lines = Files.readAllLines(file.toPath(), StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Matches the issues against the markers of one kind, one issue per marker on the marker's
+     * line; adds a problem for each marker without its issue and each issue without a marker.
+     * Returns the number of markers.
+     */
+    private static int expect(Pattern marker, List<String> lines, List<Issue> issues, String kind, List<String> problems) {
+        List<Issue> remaining = new ArrayList<>(issues);
         int markers = 0;
         for (int n = 0; n < lines.size(); n++) {
-            Matcher m = MARKER.matcher(lines.get(n));
+            Matcher m = marker.matcher(lines.get(n));
             if (!m.find()) {
                 continue;
             }
@@ -92,16 +113,12 @@ public class ModelFilesTest {
                 }
             }
             if (match == null) {
-                problems.add("line " + line + ": expected an error containing '" + expected + "'");
+                problems.add("line " + line + ": expected " + kind + " containing '" + expected + "'");
             }
         }
         for (Issue issue : remaining) {
             problems.add("unexpected " + Models.format(issue));
         }
-        assertTrue(file + " has no //! marker", markers > 0);
-        if (!problems.isEmpty()) {
-            fail(String.join("\n", problems) + "\nall errors:\n"
-                    + errors.stream().map(Models::format).collect(Collectors.joining("\n")));
-        }
+        return markers;
     }
 }

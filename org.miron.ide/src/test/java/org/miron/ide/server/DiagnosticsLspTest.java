@@ -18,6 +18,7 @@ import org.eclipse.lsp4j.FileChangeType;
 import org.eclipse.lsp4j.FileEvent;
 import org.junit.Rule;
 import org.junit.Test;
+import org.miron.generator.standalone.Diagnostic.Severity;
 import org.miron.generator.standalone.ModelLoader;
 
 /** The server's diagnostics are `miron check`'s, and follow the files on disk. */
@@ -35,12 +36,52 @@ public class DiagnosticsLspTest {
                 "<SubTreePlus ID=\"PickDeliverChrge\"").replace("<Action ID=\"objectdrop\" obj_index=\"-1\"/>",
                 "<RetryUntilSuccesful num_attempts=\"2\"><Action ID=\"objectdrop\" obj_index=\"-1\"/></RetryUntilSuccesful>"));
 
+        assertSameAsMironCheck(miron, List.of(miron, bt));
+    }
+
+    /** Timers, schedules and their warnings: the server underlines the very cron field `miron check` names. */
+    @Test
+    public void timerAndScheduleDiagnosticsAreMironChecks() throws Exception {
+        Path roqme = session.workspace.resolve("intralogistics.roqme");
+        String text = Files.readString(roqme) + """
+
+                /** Rounds at 8 on weekdays. */
+                timer rounds := schedule("0 8 * * MON-FRY")
+                timer forgotten paused := 5 minutes
+                timer zero := 0 seconds
+                var wrong : number := sinceLastDelivery + 1
+                observation onRounds : rounds /**/ reinforces safety
+                """;
+        Files.writeString(roqme, text);
+        List<org.miron.generator.standalone.Diagnostic> expected = assertSameAsMironCheck(roqme, List.of(roqme));
+        assertEquals(expected.toString(), 3, expected.stream().filter(d -> d.severity() == Severity.ERROR).count());
+        assertEquals(expected.toString(), 1, expected.stream().filter(d -> d.severity() == Severity.WARNING).count());
+        // MON-FRY: the error starts at FRY
+        String rounds = "timer rounds := schedule(\"0 8 * * MON-";
+        assertTrue(expected.toString(), expected.stream().anyMatch(d -> d.code().equals("roqme.invalid-schedule")
+                && d.column() == rounds.length() + 1));
+
+        String uri = LspClient.uri(roqme);
+        org.eclipse.lsp4j.Hover hover = session.client.server().getTextDocumentService()
+                .hover(new org.eclipse.lsp4j.HoverParams(new org.eclipse.lsp4j.TextDocumentIdentifier(uri),
+                        IntralogisticsLspTest.positionAfter(text, "observation onRounds : roun")))
+                .get(60, java.util.concurrent.TimeUnit.SECONDS);
+        String shown = hover.getContents().getRight().getValue();
+        assertTrue(shown, shown.contains("Rounds at 8 on weekdays."));
+    }
+
+    /**
+     * Opens the files and checks that the server publishes for each exactly what `miron check`
+     * reports for it (message, position, severity and code) when loading the first; returns those.
+     */
+    private List<org.miron.generator.standalone.Diagnostic> assertSameAsMironCheck(Path loaded, List<Path> files)
+            throws Exception {
         ModelLoader check = new ModelLoader();
-        check.load(miron.toFile());
+        check.load(loaded.toFile());
         List<org.miron.generator.standalone.Diagnostic> expected = check.validateAll();
         assertFalse(expected.isEmpty());
 
-        for (Path file : List.of(miron, bt)) {
+        for (Path file : files) {
             String uri = session.client.open(file);
             Set<String> fromCheck = expected.stream()
                     .filter(d -> Path.of(d.file()).toAbsolutePath().normalize().equals(file.toAbsolutePath().normalize()))
@@ -56,6 +97,7 @@ public class DiagnosticsLspTest {
             assertFalse(file.toString(), fromCheck.isEmpty());
             assertEquals(file.toString(), fromCheck, fromServer);
         }
+        return expected;
     }
 
     @Test
