@@ -41,7 +41,7 @@ function common(s) {
             patterns: [
                 {
                     name: `comment.block.documentation.${s}`,
-                    begin: String.raw`/\*\*(?!/)`,
+                    begin: String.raw`/\*\*(?![*/])`,
                     end: String.raw`\*/`,
                     beginCaptures: { 0: { name: `punctuation.definition.comment.begin.${s}` } },
                     endCaptures: { 0: { name: `punctuation.definition.comment.end.${s}` } },

@@ -106,6 +106,12 @@ describe('RoQME grammar (intralogistics.roqme)', async () => {
         expectScope(c, '*/ param p', 'param', 'storage.type.roqme');
         expectNoScope(c, '/* block */', 'block', 'comment.block.documentation');
     });
+    test('/**/ and /***/ are plain comments, as in the language', async () => {
+        const c = await tokenize('roqme', '/**/ context a : boolean\n/***/ context b : boolean\n/*** banner ***/ context d : boolean');
+        expectScope(c, '/**/', 'context', 'storage.type.roqme');
+        expectScope(c, '/***/', 'context', 'storage.type.roqme');
+        expectNoScope(c, 'banner', '** banner **', 'comment.block.documentation');
+    });
     test('strings with escapes', async () => {
         const c = await tokenize('roqme', 'context c : number unit "m\\"s"');
         expectScope(c, 'context c', '\\"', 'constant.character.escape.roqme');
