@@ -55,10 +55,26 @@ public class NativeBackendTest {
             """;
 
     private NativeBackend backend(String io) throws IOException {
+        return new NativeBackend(model(io));
+    }
+
+    private IoModel model(String io) throws IOException {
         Path dir = temp.newFolder().toPath();
         Files.writeString(dir.resolve("m.mzn"), "% unused by the native backend\n");
         Files.writeString(dir.resolve("m.io.json"), io);
-        return new NativeBackend(IoModel.load(dir.resolve("m.io.json")));
+        return IoModel.load(dir.resolve("m.io.json"));
+    }
+
+    private static String withoutDecision() {
+        return IO.substring(0, IO.indexOf(",\n \"decision\"")) + "}";
+    }
+
+    @Test
+    public void nativeIsTheDefaultUnlessTheFileHasNoDecisionSection() throws Exception {
+        EngineOptions o = new EngineOptions(null);
+        assertEquals("native", Backends.create(o.backend, model(IO), o).name());
+        assertEquals("minizinc", Backends.create(o.backend, model(withoutDecision()), o).name());
+        assertEquals("both", Backends.create("both", model(IO), o).name());
     }
 
     private static Map<String, Object> inputs(Object... changes) {
@@ -136,9 +152,8 @@ public class NativeBackendTest {
 
     @Test
     public void aFileWithoutDecisionSectionIsRefusedWithAHint() throws IOException {
-        String old = IO.substring(0, IO.indexOf(",\n \"decision\"")) + "}";
         try {
-            backend(old);
+            backend(withoutDecision());
             fail("accepted an io.json without decision section");
         } catch (IllegalArgumentException e) {
             assertTrue(e.getMessage(), e.getMessage().contains("--backend minizinc"));
