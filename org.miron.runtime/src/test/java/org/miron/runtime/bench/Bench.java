@@ -32,6 +32,8 @@ public final class Bench {
     private static final int[] SIZES = { 5, 50, 200, 1000 };
 
     public static void main(String[] args) throws Exception {
+        // Per-decision INFO lines (acknowledged change-parameters) would flood the output and time the console.
+        java.util.logging.Logger.getLogger("").setLevel(java.util.logging.Level.WARNING);
         List<String> backends = args.length > 0 && !args[0].isBlank() ? List.of(args[0].split(",")) : Backends.names();
         int rounds = args.length > 1 ? Integer.parseInt(args[1]) : 40;
         Path dir = Files.createTempDirectory("miron-bench");
