@@ -19,8 +19,9 @@ public final class EngineCommand implements Callable<Integer> {
     @Option(names = "--io", required = true, paramLabel = "FILE", description = "the generated name.io.json")
     Path io;
 
-    @Option(names = "--backend", description = "solver backend: minizinc (the reference), native (in process), both (cross-check) (default: ${DEFAULT-VALUE})")
-    String backend = "minizinc";
+    @Option(names = "--backend", description = "solver backend: native (in process), minizinc (the reference) or both "
+            + "(cross-check every decision) (default: native; minizinc for an io.json without decision section)")
+    String backend;
 
     @Option(names = "--minizinc", paramLabel = "PATH", description = "MiniZinc executable (default: ${DEFAULT-VALUE})")
     String minizinc = "minizinc";

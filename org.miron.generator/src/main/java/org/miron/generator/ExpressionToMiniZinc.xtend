@@ -36,6 +36,17 @@ import org.miron.dsl.util.Types
  * 0-based index, and "=" on a numeric varpoint means "within half a step" so that a value between
  * two samples still selects the nearest one. What has no MiniZinc meaning (event patterns,
  * timers, windows over time) is reported as a GenerationError on the offending expression.
+ *
+ * A comparison that reads varpoints is tabulated over their value indexes: it becomes
+ * {@code vp_var in {vp_i | vp_i in 0..vp_n-1 where <comparison on vp_x[vp_i]>}} (a mixed-radix
+ * index for several varpoints), a set MiniZinc computes while flattening, from the parameters,
+ * in the same double arithmetic as the native backend. No float variable is left: Gecode's float
+ * bounds used to refuse exact values at the ends of a range (an inactive rule's
+ * {@code v_x[v_var] - c/2} one ulp past its computed bound made v = 2.0 infeasible), and the float
+ * element constraints were most of the flattening time. Only comparisons over more than
+ * {@link #TABLE_LIMIT} value combinations keep float arithmetic on the decisions.
+ * Partial functions go through miron_sqrt/miron_pow/miron_exp (MiniZincGenerator), which are
+ * undefined, hence false in their Boolean context, where MiniZinc's own would abort the solve.
  */
 class ExpressionToMiniZinc {
 	/** What one expression reads: the rule guards use it. */
@@ -44,8 +55,15 @@ class ExpressionToMiniZinc {
 		public val Set<SampledVarpoint> varpoints = new LinkedHashSet
 	}
 
+	/** Largest number of value combinations a comparison is tabulated over. */
+	public static val TABLE_LIMIT = 250_000L
+
 	val Map<VariationPoint, SampledVarpoint> varpoints
 	val List<GenerationError> errors
+	/** Inside a tabulated comparison: varpoints read it are referred to by their index (vp_i). */
+	var boolean tabulating
+	/** Inside a comparison too large to tabulate: float arithmetic on the decisions. */
+	var boolean floatVariables
 	/** Every property and context any translated expression read, in order of first mention. */
 	public val Set<Property> properties = new LinkedHashSet
 	public val Set<Context> contexts = new LinkedHashSet
@@ -74,13 +92,16 @@ class ExpressionToMiniZinc {
 
 	def private binary(BinaryExpression e, Mentions m) {
 		val op = e.operator
+		if (!tabulating && !floatVariables && COMPARISONS.contains(op)) {
+			return tabulated(e, m)
+		}
 		if (op == BinaryOperator.EQ || op == BinaryOperator.NE) {
 			val vp = numericVarpoint(e.left) ?: numericVarpoint(e.right)
 			if (vp !== null) {
 				// Within half a step of the wanted value: the nearest sample is selected.
 				val other = if (numericVarpoint(e.left) !== null) e.right else e.left
 				m.varpoints += vp
-				val distance = '''abs(«vp.x»[«vp.decision»] - «translate(other, m)»)'''
+				val distance = '''abs(«value(vp)» - «translate(other, m)»)'''
 				val half = Numbers.mzn(vp.step.doubleValue / 2)
 				return if (op == BinaryOperator.EQ) '''(«distance» <= «half»)''' else '''(«distance» > «half»)'''
 			}
@@ -135,9 +156,9 @@ class ExpressionToMiniZinc {
 					return unsupported(e, "varpoint '" + v.name + "' has no value table")
 				}
 				m.varpoints += vp
-				if (vp.isEnum) vp.decision
-				else if (Types.dataType(v as EObject) instanceof BooleanType) '''(«vp.decision» = 1)'''
-				else '''«vp.x»[«vp.decision»]'''
+				if (vp.isEnum) index(vp)
+				else if (Types.dataType(v as EObject) instanceof BooleanType) '''(«index(vp)» = 1)'''
+				else value(vp)
 			}
 			Param: {
 				val value = v.initializedTo
@@ -168,7 +189,82 @@ class ExpressionToMiniZinc {
 		if (arity != e.args.size) {
 			return unsupported(e, "rules may call abs, sqrt, exp (one argument), pow, min and max (two arguments)")
 		}
-		'''«e.function»(«FOR a : e.args SEPARATOR ', '»«translate(a, m)»«ENDFOR»)'''
+		// MiniZinc's own sqrt/pow/exp abort a solve on a parameter outside their domain.
+		val name = if (!floatVariables && PARTIAL.contains(e.function)) "miron_" + e.function else e.function
+		'''«name»(«FOR a : e.args SEPARATOR ', '»«translate(a, m)»«ENDFOR»)'''
+	}
+
+	static val PARTIAL = #{"sqrt", "pow", "exp"}
+	static val COMPARISONS = #{BinaryOperator.EQ, BinaryOperator.NE, BinaryOperator.LT, BinaryOperator.GT,
+		BinaryOperator.LE, BinaryOperator.GE}
+
+	/**
+	 * A comparison as a set of value indexes (see the class comment); unchanged when it reads no
+	 * varpoint (then it is a parameter expression already).
+	 */
+	def private String tabulated(BinaryExpression e, Mentions m) {
+		val read = varpointsIn(e)
+		var combinations = 1L
+		for (vp : read) {
+			combinations = Math.min(Long.MAX_VALUE / 2, combinations * Math.max(1, vp.size))
+		}
+		if (combinations > TABLE_LIMIT) {
+			floatVariables = true
+			try {
+				return binary(e, m).toString
+			} finally {
+				floatVariables = false
+			}
+		}
+		tabulating = true
+		val body = try {
+			binary(e, m).toString
+		} finally {
+			tabulating = false
+		}
+		if (read.empty) {
+			return body
+		}
+		var decision = read.head.decision
+		var index = read.head.name + "_i"
+		for (vp : read.tail) {
+			decision = '''(«decision» * «vp.n» + «vp.decision»)'''
+			index = '''(«index» * «vp.n» + «vp.name»_i)'''
+		}
+		val generators = read.map['''«name»_i in 0..«n»-1'''].join(", ")
+		'''(«decision» in {«index» | «generators» where «body»})'''
+	}
+
+	/** The varpoints an expression reads (through parameters' default values too), in order of mention. */
+	def private Set<SampledVarpoint> varpointsIn(EObject e) {
+		val found = new LinkedHashSet<SampledVarpoint>
+		collect(e, found)
+		found
+	}
+
+	def private void collect(EObject o, Set<SampledVarpoint> found) {
+		if (o instanceof VariableRef) {
+			val v = o.variable
+			if (v instanceof VariationPoint) {
+				val vp = varpoints.get(v)
+				if (vp !== null) {
+					found += vp
+				}
+			} else if (v instanceof Param && (v as Param).initializedTo !== null) {
+				collect((v as Param).initializedTo, found)
+			}
+		}
+		o.eContents.forEach[collect(it, found)]
+	}
+
+	/** The decision, or the comprehension's index while tabulating. */
+	def private index(SampledVarpoint vp) {
+		if (tabulating) vp.name + "_i" else vp.decision
+	}
+
+	/** The value of a numeric varpoint. */
+	def private value(SampledVarpoint vp) {
+		'''«vp.x»[«index(vp)»]'''.toString
 	}
 
 	/** The numeric (non-boolean) varpoint an expression reads directly, or null. */

@@ -56,7 +56,15 @@ class MiniZincGenerator {
 		«IF !m.rules.empty»
 
 		% Rules: a consequence applies while its condition holds, unless a varpoint it constrains is
-		% overridden by hand (the override wins) or a context it reads is still unknown.
+		% overridden by hand (the override wins) or a context it reads is still unknown. A comparison
+		% reading varpoints is the set of their value indexes where it holds, computed from the
+		% parameters while flattening (exact, no float variables).
+		% Partial functions: undefined outside their domain, so false in the enclosing Boolean, as
+		% for a division by zero (MiniZinc's own sqrt/pow/exp would abort the solve there).
+		function float: miron_sqrt(float: x) = if x >= 0.0 then sqrt(x) else 0.0 / 0.0 endif;
+		function float: miron_exp(float: x) = if x <= 709.0 then exp(x) else 0.0 / 0.0 endif;
+		function float: miron_pow(float: x, float: y) =
+		  if x > 0.0 \/ (x = 0.0 /\ y >= 0.0) \/ (x < 0.0 /\ abs(y) < 1.0e9 /\ y = int2float(floor(y))) then pow(x, y) else 0.0 / 0.0 endif;
 		«FOR r : m.rules»
 			% rule «r.source»
 			«FOR c : r.consequences»

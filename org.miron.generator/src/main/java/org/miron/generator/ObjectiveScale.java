@@ -46,6 +46,6 @@ public final class ObjectiveScale {
 
     /** The unit as MiniZinc source ("100.0" in the usual case). */
     public String unitText() {
-        return unit == DEFAULT_UNIT ? "100.0" : Double.toString(unit);
+        return unit == DEFAULT_UNIT ? "100.0" : Numbers.mzn(unit); // never an exponent
     }
 }

@@ -40,8 +40,16 @@ public final class Backends {
         FACTORIES.put(name, factory);
     }
 
+    /**
+     * @param name a backend, or null for the default: {@code native} (proved equal to MiniZinc by
+     *             the differential test), or {@code minizinc} for an io.json without a
+     *             {@code decision} section (generated before it existed, or written by hand)
+     */
     public static synchronized SolverBackend create(String name, IoModel model, EngineOptions options)
             throws EngineStartException {
+        if (name == null) {
+            name = model.decision() != null ? "native" : "minizinc";
+        }
         Factory f = FACTORIES.get(name);
         if (f == null) {
             throw new EngineStartException("unknown backend '" + name + "' (available: "

@@ -3,13 +3,14 @@ package org.miron.runtime.engine;
 import java.nio.file.Path;
 import org.miron.runtime.Endpoints;
 
-/** Engine settings; defaults are the MIRoN loopback endpoints and the minizinc backend. */
+/** Engine settings; defaults are the MIRoN loopback endpoints and the native backend. */
 public final class EngineOptions {
     public Path ioJson;
     public String busIn = Endpoints.DEFAULT_BUS_IN;
     public String busOut = Endpoints.DEFAULT_BUS_OUT;
     public String request = Endpoints.DEFAULT_REQUEST;
-    public String backend = "minizinc";
+    /** Null: native, or minizinc for an io.json without decision section ({@link Backends#create}). */
+    public String backend;
     public String minizinc = "minizinc";
     public String solver = "gecode";
     /** Solver time limit; 0: automatic, 2 s + 25 ms per varpoint (MiniZincBackend.autoTimeLimitMs). */

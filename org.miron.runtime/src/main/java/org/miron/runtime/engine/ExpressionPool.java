@@ -9,7 +9,8 @@ import java.util.Map;
 /**
  * The rule expression trees of the io.json {@code decision} section, compiled once into flat
  * arrays (one slot per node) and evaluated without allocating. Every value is a double; booleans
- * are 1 and 0. Undefined arithmetic (division by zero, sqrt of a negative number) is NaN, and
+ * are 1 and 0. Undefined arithmetic (division by zero, sqrt of a negative number, exp above 709,
+ * pow outside its real domain: the .mzn's miron_* functions) is NaN, and
  * every comparison with NaN is false: MiniZinc's relational semantics, where an undefined
  * expression makes its nearest enclosing Boolean false.
  */
@@ -135,8 +136,8 @@ final class ExpressionPool {
                 return Math.abs(x);
             case SQRT:
                 return x < 0 ? Double.NaN : Math.sqrt(x);
-            case EXP:
-                return Math.exp(x);
+            case EXP: // the .mzn's miron_exp: undefined where exp would overflow
+                return x <= 709.0 ? Math.exp(x) : Double.NaN;
             default:
                 break;
         }
@@ -162,8 +163,9 @@ final class ExpressionPool {
                 return x * y;
             case DIV:
                 return y == 0 ? Double.NaN : x / y;
-            case POW:
-                return Math.pow(x, y);
+            case POW: // the .mzn's miron_pow: undefined outside pow's real domain
+                return x > 0 || (x == 0 && y >= 0) || (x < 0 && Math.abs(y) < 1e9 && y == Math.floor(y))
+                        ? Math.pow(x, y) : Double.NaN;
             case MIN:
                 return Math.min(x, y);
             case MAX:

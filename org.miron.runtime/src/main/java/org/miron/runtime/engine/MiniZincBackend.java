@@ -11,7 +11,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import org.miron.runtime.Json;
 
 /**
  * Runs the real {@code minizinc} binary per solve: argument list (no shell), Gecode, a time
@@ -92,9 +91,15 @@ public final class MiniZincBackend implements SolverBackend {
     public SolveResult solve(Map<String, Object> params) {
         long start = System.nanoTime();
         Path paramsFile;
+        String data;
+        try {
+            data = MiniZincData.json(params);
+        } catch (IllegalArgumentException e) {
+            return SolveResult.failed(SolveResult.Status.ERROR, e.getMessage(), 0);
+        }
         try {
             paramsFile = Files.createTempFile("miron-params-", ".json");
-            Files.writeString(paramsFile, Json.write(params));
+            Files.writeString(paramsFile, data);
         } catch (IOException e) {
             return SolveResult.failed(SolveResult.Status.ERROR, "cannot write the parameters: " + e.getMessage(), 0);
         }

@@ -1,6 +1,7 @@
 package org.miron.runtime.engine;
 
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -14,7 +15,9 @@ import java.util.concurrent.TimeUnit;
  * in declaration order, values ascending (MiniZinc's order, so among equal optima the same,
  * lexicographically first, one wins), pruned by the per-varpoint maxima of the rest. Without
  * impacts (satisfy) values are tried preset, current, then ascending, as the .mzn's search does.
- * All working arrays are allocated once; a solve only allocates its result.
+ * All working arrays are allocated once; a solve allocates nothing but a new result when the
+ * decisions (or the whole milliseconds it took) differ from the previous solve's, whose result,
+ * immutable, is returned again otherwise: the steady state allocates nothing.
  */
 public final class NativeBackend implements SolverBackend {
     private final NativeModel m;
@@ -30,6 +33,10 @@ public final class NativeBackend implements SolverBackend {
     private final long[] suffix;
     private long bestValue;
     private boolean found;
+    /** The previous SOLVED result and its decisions, returned again when nothing differs. */
+    private SolveResult last;
+    private final int[] lastBest;
+    private SolveResult lastUnsat;
 
     public NativeBackend(IoModel io) {
         m = new NativeModel(io);
@@ -45,6 +52,7 @@ public final class NativeBackend implements SolverBackend {
         }
         assign = new int[n];
         best = new int[n];
+        lastBest = new int[n];
         suffix = new long[n + 1];
         active = new boolean[m.constraints.length];
         checkAt = new int[n][];
@@ -83,11 +91,17 @@ public final class NativeBackend implements SolverBackend {
                 return unsat(start);
             }
         }
+        long millis = millisSince(start);
+        if (last != null && last.millis() == millis && Arrays.equals(best, lastBest)) {
+            return last;
+        }
         Map<String, Integer> decisions = new LinkedHashMap<>();
         for (int v = 0; v < m.varpointCount; v++) {
             decisions.put(m.decisionNames[v], best[v]);
         }
-        return new SolveResult(SolveResult.Status.SOLVED, decisions, true, "", millisSince(start));
+        System.arraycopy(best, 0, lastBest, 0, best.length);
+        last = new SolveResult(SolveResult.Status.SOLVED, Collections.unmodifiableMap(decisions), true, "", millis);
+        return last;
     }
 
     /**
@@ -119,8 +133,12 @@ public final class NativeBackend implements SolverBackend {
         return total;
     }
 
-    private static SolveResult unsat(long start) {
-        return SolveResult.failed(SolveResult.Status.UNSAT, "model is unsatisfiable", millisSince(start));
+    private SolveResult unsat(long start) {
+        long millis = millisSince(start);
+        if (lastUnsat == null || lastUnsat.millis() != millis) {
+            lastUnsat = SolveResult.failed(SolveResult.Status.UNSAT, "model is unsatisfiable", millis);
+        }
+        return lastUnsat;
     }
 
     /** Copies the parameters into their slots; returns the name of a missing one, or null. */

@@ -48,6 +48,8 @@ final class EndToEnd {
         o.timeLimitMs = 0;
         BlockingQueue<String[]> variants = new LinkedBlockingQueue<>();
         long[] solveNanos = new long[4 * rounds + 16];
+        long[] solveStart = new long[solveNanos.length]; // System.nanoTime() at each solve's start and end
+        long[] solveEnd = new long[solveNanos.length];
         int[] solves = { 0 };
         try (Broker broker = new Broker(ep).start();
                 SkillInterfaceMock skills = new SkillInterfaceMock(ep.skill(), ep.skillEvents(), SkillTable.defaults()).start();
@@ -55,7 +57,7 @@ final class EndToEnd {
                 BusClient watch = new BusClient("bench-watch", ep.busIn(), ep.busOut(), List.of(Topics.VARIANT_PREFIX),
                         (t, b) -> variants.add(new String[] { t, new String(b, StandardCharsets.UTF_8),
                                 Long.toString(System.nanoTime()) })).start();
-                Engine engine = new Engine(io, timed(Backends.create(backend, io, o), solveNanos, solves, cached), o)
+                Engine engine = new Engine(io, timed(Backends.create(backend, io, o), solveNanos, solveStart, solveEnd, solves, cached), o)
                         .start()) {
             input.awaitReady(TIMEOUT_MS);
             watch.awaitReady(TIMEOUT_MS);
@@ -65,6 +67,8 @@ final class EndToEnd {
 
             long[] variant = new long[rounds];
             long[] variantOverhead = new long[rounds];
+            long[] inbound = new long[rounds]; // input published → its solve starts
+            long[] outbound = new long[rounds]; // the last solve of the round ends → variant received
             for (int i = 0; i < rounds; i++) {
                 int first = solves[0];
                 String expect = i % 2 == 0 ? "dock" : "pickDeliverCharge";
@@ -74,8 +78,14 @@ final class EndToEnd {
                 if (!got[1].contains("\"" + expect + "\"")) {
                     throw new IllegalStateException("unexpected variant " + got[1]);
                 }
-                variant[i] = Long.parseLong(got[2]) - t0;
+                long received = Long.parseLong(got[2]);
+                variant[i] = received - t0;
                 variantOverhead[i] = variant[i] - solveTime(solveNanos, first, solves[0]);
+                synchronized (solveNanos) {
+                    int last = Math.min(solves[0], solveNanos.length) - 1;
+                    inbound[i] = first < solveNanos.length ? solveStart[first] - t0 : 0;
+                    outbound[i] = last >= first ? received - solveEnd[last] : 0;
+                }
             }
             int solvesBefore = solves[0];
             long[] param = new long[rounds];
@@ -101,6 +111,10 @@ final class EndToEnd {
             System.out.printf("%-60s %-9s %s%n", "input -> change-parameter (" + rounds + ")", backend, new Stats(param).p50p99());
             System.out.printf("%-60s %-9s %s%n", "  overhead: input -> variant minus that round's solve", backend,
                     new Stats(variantOverhead).p50p99());
+            System.out.printf("%-60s %-9s %s%n", "    inbound: input published -> solve starts", backend,
+                    new Stats(inbound).p50p99());
+            System.out.printf("%-60s %-9s %s%n", "    outbound: solve ends -> variant received", backend,
+                    new Stats(outbound).p50p99());
             System.out.printf("%-60s %-9s %s%n", "  overhead: input -> change-parameter minus that round's solve",
                     backend, new Stats(paramOverhead).p50p99());
             System.out.printf("%-60s %-9s %s%n", "  of which solver (backend.solve in the engine, " + solver.length + ")",
@@ -139,7 +153,8 @@ final class EndToEnd {
     }
 
     /** The backend, recording how long each solve takes. */
-    private static SolverBackend timed(SolverBackend b, long[] nanos, int[] count, boolean cached) {
+    private static SolverBackend timed(SolverBackend b, long[] nanos, long[] starts, long[] ends, int[] count,
+            boolean cached) {
         Map<Map<String, Object>, SolveResult> cache = new java.util.HashMap<>();
         return new SolverBackend() {
             @Override
@@ -162,9 +177,12 @@ final class EndToEnd {
                         cache.put(new java.util.HashMap<>(params), r);
                     }
                 }
+                long t1 = System.nanoTime();
                 synchronized (nanos) {
                     if (count[0] < nanos.length) {
-                        nanos[count[0]] = System.nanoTime() - t0;
+                        nanos[count[0]] = t1 - t0;
+                        starts[count[0]] = t0;
+                        ends[count[0]] = t1;
                     }
                     count[0]++;
                 }

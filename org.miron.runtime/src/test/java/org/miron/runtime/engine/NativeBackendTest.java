@@ -55,10 +55,26 @@ public class NativeBackendTest {
             """;
 
     private NativeBackend backend(String io) throws IOException {
+        return new NativeBackend(model(io));
+    }
+
+    private IoModel model(String io) throws IOException {
         Path dir = temp.newFolder().toPath();
         Files.writeString(dir.resolve("m.mzn"), "% unused by the native backend\n");
         Files.writeString(dir.resolve("m.io.json"), io);
-        return new NativeBackend(IoModel.load(dir.resolve("m.io.json")));
+        return IoModel.load(dir.resolve("m.io.json"));
+    }
+
+    private static String withoutDecision() {
+        return IO.substring(0, IO.indexOf(",\n \"decision\"")) + "}";
+    }
+
+    @Test
+    public void nativeIsTheDefaultUnlessTheFileHasNoDecisionSection() throws Exception {
+        EngineOptions o = new EngineOptions(null);
+        assertEquals("native", Backends.create(o.backend, model(IO), o).name());
+        assertEquals("minizinc", Backends.create(o.backend, model(withoutDecision()), o).name());
+        assertEquals("both", Backends.create("both", model(IO), o).name());
     }
 
     private static Map<String, Object> inputs(Object... changes) {
@@ -136,9 +152,8 @@ public class NativeBackendTest {
 
     @Test
     public void aFileWithoutDecisionSectionIsRefusedWithAHint() throws IOException {
-        String old = IO.substring(0, IO.indexOf(",\n \"decision\"")) + "}";
         try {
-            backend(old);
+            backend(withoutDecision());
             fail("accepted an io.json without decision section");
         } catch (IllegalArgumentException e) {
             assertTrue(e.getMessage(), e.getMessage().contains("--backend minizinc"));
@@ -175,5 +190,32 @@ public class NativeBackendTest {
         assertEquals(0L, (long) both.counters().get("disagreements"));
         assertEquals(Map.of("speed_var", 0, "mode_var", 1), decided(both.solve(inputs("metric_time", 0.1))));
         assertEquals(1L, (long) both.counters().get("disagreements"));
+    }
+
+    /**
+     * The hot path allocates nothing: once warm, repeated solves on changing inputs that keep the
+     * decision (the engine's steady state) allocate no byte on the calling thread.
+     */
+    @Test
+    public void aSolveThatKeepsTheDecisionAllocatesNothing() throws IOException {
+        NativeBackend b = backend(IO);
+        Map<String, Object> safe = inputs("metric_safety", 0.9, "context_crowded", true, "context_crowded_known", true);
+        Map<String, Object> safer = inputs("metric_safety", 0.95, "context_crowded", true, "context_crowded_known", true);
+        Map<String, Integer> first = decided(b.solve(safe));
+        for (int i = 0; i < 20_000; i++) { // warm-up: compiled code, the cached result
+            b.solve(i % 2 == 0 ? safe : safer);
+        }
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = threads.getCurrentThreadAllocatedBytes();
+        SolveResult r = null;
+        for (int i = 0; i < 1000; i++) {
+            r = b.solve(i % 2 == 0 ? safe : safer);
+        }
+        long allocated = threads.getCurrentThreadAllocatedBytes() - before;
+        assertEquals(first, decided(r));
+        // A new result per solve would be >= 150 KB; a solve that happens to take a whole millisecond
+        // (a GC pause under load) gets a new result too: a few of those stay far below 16 KB.
+        assertTrue(allocated + " bytes allocated by 1000 solves", allocated < 16_384);
     }
 }

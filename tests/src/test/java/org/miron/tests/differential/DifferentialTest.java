@@ -89,4 +89,43 @@ public class DifferentialTest {
                 + " UNSAT; " + alternative + " of the decisions an alternative optimum: equal objective, a tie the model leaves"
                 + " to the solver's search), " + model(invalid) + " skipped as invalid, seed " + seed);
     }
+
+    /**
+     * Seed 7, case 1212: v0 = 2.0 (index 16), the end of its range, under an inactive rule whose
+     * consequence reads v0 - c0 / 2. With float variables Gecode declared it infeasible (the
+     * difference one ulp past the bound MiniZinc had computed for it) and MiniZinc chose 1.75;
+     * on value indexes both backends choose 2.0, the value of the largest gain.
+     */
+    @Test
+    public void aValueAtTheEndOfAFloatRangeStaysFeasible() throws Exception {
+        String text = """
+                import "t.bt" as bt
+                property p0 reference 0.8
+                property p1 reference 0.8
+                context c0 : number (0:10)
+                @varpoint v0 : number (-2:0.25:2) { -1.75 affects p0-, 1.75 affects { p1++ }, 2 affects { p1+++ } }
+                @varpoint v1 : boolean
+                @varpoint v2 : number (10:10:100) { 20 affects { p0--, p1- }, 60 affects p1++ }
+                @varpoint v3 : enum { x0 : preset affects { p1--- }, x1 : bt.T1 affects p1- }
+                rule r0 : v3 != v3::x1 implies { v2 != 60 | v1 = false, v0 >= -1 | v0 = c0 / 2 }
+                """;
+        Path dir = temp.newFolder("case1212").toPath();
+        Files.writeString(dir.resolve("t.bt"), RandomModel.BT);
+        Files.writeString(dir.resolve("m.miron"), text);
+        assertEquals(0, MironCli.run("generate", dir.resolve("m.miron").toString(), "-o", dir.resolve("out").toString()));
+        IoModel io = IoModel.load(dir.resolve("out/m.io.json"));
+        Map<String, Object> params = new java.util.LinkedHashMap<>();
+        params.putAll(Map.of("metric_p0", 1.0, "metric_p1", 0.49510210195845616, "context_c0_known", true,
+                "context_c0", -0.8347223643886368));
+        for (String vp : new String[] {"v0", "v1", "v2", "v3"}) {
+            params.put(vp + "_input", false);
+            params.put(vp + "_input_value", 0);
+        }
+        params.putAll(Map.of("v0_current", 10, "v1_current", 1, "v2_current", -1, "v3_current", 1));
+        try (MiniZincBackend minizinc = new MiniZincBackend(io, "minizinc", "gecode", 20_000)) {
+            SolveResult expected = minizinc.solve(params);
+            assertEquals(expected.toString(), 16, (int) expected.decisions().get("v0_var"));
+            assertEquals(expected.decisions(), new NativeBackend(io).solve(params).decisions());
+        }
+    }
 }
