@@ -129,8 +129,9 @@ class BtWeaver {
 		}
 		val main = out.trees.head
 		if (main.name === null || main.name.empty) {
+			val taken = out.trees.map[name].toSet
 			var id = "MainTree"
-			for (var k = 2; out.trees.exists[name == id]; k++) {
+			for (var k = 2; taken.contains(id); k++) {
 				id = "MainTree" + k
 			}
 			main.name = id

@@ -43,6 +43,8 @@ public final class BtIssueCodes {
     public static final String DUPLICATE_TREE_ID = "bt.duplicate-tree-id";
     /** A BehaviorTree defined again with the same content (a warning; references use the first). */
     public static final String DUPLICATE_IDENTICAL_TREE = "bt.duplicate-identical-tree";
+    /** A second TreeNodesModel under root. */
+    public static final String DUPLICATE_NODES_MODEL = "bt.duplicate-nodes-model";
     /** An included file that is not a behaviour-tree file (its root element is not root). */
     public static final String INCLUDE_NOT_BT = "bt.include-not-bt";
     /** An element under root that BehaviorTree.CPP ignores. Data: the closest element it reads, if any. */

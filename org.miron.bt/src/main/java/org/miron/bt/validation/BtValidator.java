@@ -67,6 +67,17 @@ public class BtValidator extends AbstractBtValidator {
         }
     }
 
+    /** BehaviorTree.CPP 3: "Only a single node <TreeNodesModel> is supported" (the model keeps the last). */
+    @Check
+    public void checkSingleNodesModel(BTModel model) {
+        List<org.eclipse.xtext.nodemodel.INode> written = org.eclipse.xtext.nodemodel.util.NodeModelUtils
+                .findNodesForFeature(model, BT.getBTModel_Nodesmodel());
+        for (int i = 1; i < written.size(); i++) {
+            acceptError("only one <TreeNodesModel> is allowed under <root>: merge the declarations", model,
+                    written.get(i).getOffset(), "<TreeNodesModel>".length(), DUPLICATE_NODES_MODEL);
+        }
+    }
+
     @Check
     public void checkInclude(Import include) {
         URI uri = BtGlobalScopeProvider.resolve(include.eResource(), include.getImportURI());
