@@ -138,7 +138,7 @@ public class InMemoryGenerationTest {
         InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
         new MironGenerator().doGenerate(model, fsa, new GeneratorContext());
         String tree = file(fsa, "model.ext.xml").toString();
-        assertTrue(tree, tree.startsWith("<root main_tree_to_execute=\"MainTree\">"));
+        assertTrue(tree, tree.contains("<root main_tree_to_execute=\"MainTree\">"));
         assertTrue(tree, tree.contains("<BehaviorTree ID=\"MainTree\">"));
         assertTrue(tree, tree.contains("monitoring_parallel"));
         assertTrue(tree, tree.contains("<SubTreePlus ID=\"Extra\"/>"));

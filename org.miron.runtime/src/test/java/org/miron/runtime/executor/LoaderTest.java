@@ -74,7 +74,7 @@ public class LoaderTest {
         assertEquals(NodeStatus.SUCCESS, tree.tickRoot());
         assertEquals(1, a.ticks);
         assertEquals(1, c.ticks);
-        assertEquals("BehaviorTree_0/Child/C", tree.find("C").get().path());
+        assertEquals("BehaviorTree_0/Sequence/Child/C", tree.find("C").get().path());
     }
 
     @Test
