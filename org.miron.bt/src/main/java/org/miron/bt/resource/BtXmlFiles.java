@@ -37,8 +37,7 @@ public final class BtXmlFiles {
     public static void register(Injector bt) {
         IResourceServiceProvider services = bt.getInstance(IResourceServiceProvider.class);
         XtextResourceFactory factory = bt.getInstance(XtextResourceFactory.class);
-        IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("xml",
-                (IResourceServiceProvider.Provider) (uri, contentType) -> looksLikeBehaviourTree(uri) ? services : null);
+        IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("xml", new Services(services));
         Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("xml", new Factory(factory));
     }
 
@@ -55,6 +54,24 @@ public final class BtXmlFiles {
             return BT_HEAD.matcher(new String(in.readNBytes(HEAD), StandardCharsets.UTF_8)).matches();
         } catch (IOException unreadable) {
             return false;
+        }
+    }
+
+    /**
+     * The BT language's services for BT files, none for other .xml files. A named class, not a
+     * lambda: JDK 17's dynamic CDS archive (the `miron` script's start-up archive) crashes on
+     * this lambda's proxy class.
+     */
+    private static final class Services implements IResourceServiceProvider.Provider {
+        private final IResourceServiceProvider bt;
+
+        Services(IResourceServiceProvider bt) {
+            this.bt = bt;
+        }
+
+        @Override
+        public IResourceServiceProvider get(URI uri, String contentType) {
+            return looksLikeBehaviourTree(uri) ? bt : null;
         }
     }
 
