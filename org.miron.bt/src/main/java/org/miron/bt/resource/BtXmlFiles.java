@@ -12,6 +12,7 @@ import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.emf.ecore.xmi.impl.XMLResourceFactoryImpl;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceFactory;
+import org.miron.bt.bt.BTModel;
 
 import com.google.inject.Injector;
 
@@ -39,6 +40,16 @@ public final class BtXmlFiles {
         XtextResourceFactory factory = bt.getInstance(XtextResourceFactory.class);
         IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("xml", new Services(services));
         Resource.Factory.Registry.INSTANCE.getExtensionToFactoryMap().putIfAbsent("xml", new Factory(factory));
+    }
+
+    /**
+     * True when a loaded resource is a BT file: a BT model, and for .xml one whose root element is
+     * root (a resource set may parse every .xml as BT, as `miron check` does with the files it is given).
+     */
+    public static boolean isTree(Resource resource) {
+        return resource != null && !resource.getContents().isEmpty()
+                && resource.getContents().get(0) instanceof BTModel
+                && (!"xml".equals(resource.getURI().fileExtension()) || looksLikeBehaviourTree(resource.getURI()));
     }
 
     /** True for a BT file: root element {@code <root>}, a woven .ext.xml, or a file that does not exist yet. */

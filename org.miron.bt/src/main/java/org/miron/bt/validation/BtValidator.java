@@ -38,6 +38,7 @@ import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.bt.WhileDoElse;
+import org.miron.bt.resource.BtXmlFiles;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtCloseTags;
@@ -86,7 +87,7 @@ public class BtValidator extends AbstractBtValidator {
                     include, BT.getImport_ImportURI(), INCLUDE_NOT_FOUND);
         } else if (uri.equals(include.eResource().getURI())) {
             error("a file cannot include itself", include, BT.getImport_ImportURI(), SELF_INCLUDE);
-        } else if (BtTrees.treesOrNull(EcoreUtil2.getResource(include.eResource(), uri.toString())) == null) {
+        } else if (!BtXmlFiles.isTree(EcoreUtil2.getResource(include.eResource(), uri.toString()))) {
             error("included file '" + include.getImportURI() + "' is not a behaviour-tree file (its root element "
                     + "must be <root>)", include, BT.getImport_ImportURI(), INCLUDE_NOT_BT);
         }
