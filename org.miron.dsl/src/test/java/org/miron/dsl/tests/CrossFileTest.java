@@ -59,4 +59,14 @@ public class CrossFileTest {
         org.miron.bt.bt.BTModel tree = (org.miron.bt.bt.BTModel) charge.getReference().eResource().getContents().get(0);
         assertTrue(charge.getReference() == tree.getTrees().get(1));
     }
+
+    /** Issue 17: a tree without ID is valid BT, and a .miron that tries to name it is told why it cannot. */
+    @Test
+    public void aTreeWithoutIdCannotBeReferencedAndTheMessageSaysSo() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_unnamed_tree.miron"));
+        List<String> errors = Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .map(Models::format).collect(Collectors.toList());
+        assertEquals(List.of("uses_unnamed_tree.miron:4:26: error: unknown behavior tree 't.Main' (the BehaviorTree "
+                + "without ID in unnamed_tree.bt cannot be referenced: give it an ID there)"), errors);
+    }
 }
