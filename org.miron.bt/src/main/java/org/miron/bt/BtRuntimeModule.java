@@ -8,6 +8,7 @@ import org.eclipse.xtext.parser.antlr.ISyntaxErrorMessageProvider;
 import org.eclipse.xtext.parser.antlr.Lexer;
 import org.eclipse.xtext.parser.antlr.LexerBindings;
 import org.eclipse.xtext.parser.antlr.LexerProvider;
+import org.eclipse.xtext.resource.IDefaultResourceDescriptionStrategy;
 import org.eclipse.xtext.scoping.IGlobalScopeProvider;
 import org.eclipse.xtext.serializer.sequencer.ISyntacticSequencer;
 import org.miron.bt.conversion.BtValueConverterService;
@@ -17,6 +18,7 @@ import org.miron.bt.naming.BtQualifiedNameProvider;
 import org.miron.bt.parser.BtLexer;
 import org.miron.bt.parser.BtSyntaxErrorMessageProvider;
 import org.miron.bt.parser.antlr.lexer.InternalBtLexer;
+import org.miron.bt.resource.BtResourceDescriptionStrategy;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.serializer.BtCloseTagSequencer;
 
@@ -66,6 +68,11 @@ public class BtRuntimeModule extends AbstractBtRuntimeModule {
     @Override
     public Class<? extends ISyntacticSequencer> bindISyntacticSequencer() {
         return BtCloseTagSequencer.class;
+    }
+
+    // A tree repeated with the same ID and content is not exported twice (issue 17).
+    public Class<? extends IDefaultResourceDescriptionStrategy> bindIDefaultResourceDescriptionStrategy() {
+        return BtResourceDescriptionStrategy.class;
     }
 
     public Class<? extends ILinkingDiagnosticMessageProvider> bindILinkingDiagnosticMessageProvider() {

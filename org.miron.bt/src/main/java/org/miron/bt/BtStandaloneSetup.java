@@ -2,6 +2,7 @@ package org.miron.bt;
 
 import org.eclipse.emf.ecore.EPackage;
 import org.miron.bt.bt.BtPackage;
+import org.miron.bt.resource.BtXmlFiles;
 
 import com.google.inject.Injector;
 
@@ -31,5 +32,12 @@ public class BtStandaloneSetup extends BtStandaloneSetupGenerated {
         // register the EPackage; without it the grammar's proxies to bt.ecore stay unresolved.
         EPackage.Registry.INSTANCE.putIfAbsent(BtPackage.eNS_URI, BtPackage.eINSTANCE);
         return super.createInjectorAndDoEMFRegistration();
+    }
+
+    /** Also .xml, for BehaviorTree.CPP files (content-aware, see BtXmlFiles). */
+    @Override
+    public void register(Injector injector) {
+        super.register(injector);
+        BtXmlFiles.register(injector);
     }
 }

@@ -52,6 +52,36 @@ public class CheckFormatTest {
         return nodes;
     }
 
+    /**
+     * Issue 17: BehaviorTree.CPP's .xml trees include each other (no stack trace, no error), a tree
+     * needs no ID when it is the file's only one, and an included .xml that is not a tree is an
+     * error at the include; a library of several trees checks the same alone and with its includer.
+     */
+    @Test
+    public void xmlTreesIncludeEachOtherAndVerdictsDoNotDependOnWhatElseIsChecked() throws IOException {
+        File child = write("child/child.xml", "<root main_tree_to_execute=\"Child\">\n"
+                + "  <BehaviorTree ID=\"Child\"><AlwaysSuccess/></BehaviorTree>\n"
+                + "  <BehaviorTree ID=\"Other\"><AlwaysFailure/></BehaviorTree>\n</root>\n");
+        File main = write("main.xml", "<root>\n  <include path=\"child/child.xml\"/>\n"
+                + "  <BehaviorTree><SubTree ID=\"Child\"/></BehaviorTree>\n</root>\n");
+        File library = write("lib.xml", "<root>\n  <BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree>\n"
+                + "  <BehaviorTree ID=\"B\"><AlwaysSuccess/></BehaviorTree>\n</root>\n");
+        File user = write("user.xml", "<root main_tree_to_execute=\"U\">\n  <include path=\"lib.xml\"/>\n"
+                + "  <BehaviorTree ID=\"U\"><SubTree ID=\"A\"/></BehaviorTree>\n</root>\n");
+        assertEquals(out + "" + err, 0, miron("check", main.getPath()));
+        assertEquals(out + "" + err, 0, miron("check", library.getPath()));
+        assertEquals(out + "" + err, 0, miron("check", user.getPath(), library.getPath()));
+        assertEquals(out + "" + err, 0, miron("check", library.getPath(), user.getPath()));
+        assertEquals("", out.toString() + err);
+        write("pom.xml", "<project><modelVersion>4.0.0</modelVersion></project>\n");
+        File broken = write("includes_pom.xml", "<root>\n  <include path=\"pom.xml\"/>\n"
+                + "  <BehaviorTree><AlwaysSuccess/></BehaviorTree>\n</root>\n");
+        assertEquals(1, miron("check", broken.getPath()));
+        assertTrue(out.toString(), out.toString().contains(
+                "includes_pom.xml:2:17: error [bt.include-not-bt]: included file 'pom.xml' is not a behaviour-tree file"));
+        assertFalse(out + "" + err, (out + "" + err).contains("Exception"));
+    }
+
     @Test
     public void textLinesCarryTheCodeOfErrorsAndWarnings() throws IOException {
         File file = write("mixed.bt", "<root>\n  <BehaviorTree ID=\"M\">\n    <Sequence>\n"

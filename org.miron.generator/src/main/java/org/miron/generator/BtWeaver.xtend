@@ -107,6 +107,7 @@ class BtWeaver {
 		out.imports += includes(woven, bound).map[path|factory.createImport => [importURI = path]]
 		copies.forEach[out.trees += trees.toList]
 		out.nodesmodel = copies.head.nodesmodel
+		nameMainTree(out)
 		val monitored = bound.filter[isEnum].toList
 		if (!monitored.empty) {
 			monitor(out, monitored, m)
@@ -115,6 +116,27 @@ class BtWeaver {
 			}
 		}
 		out
+	}
+
+	/**
+	 * BehaviorTree.CPP 3 runs a file's only tree when no main_tree_to_execute is given, counting
+	 * the included trees too. A woven file with several trees or includes therefore names its
+	 * main tree; a main tree without ID (BehaviorTree.CPP's tutorial form) gets one first.
+	 */
+	def private nameMainTree(BTModel out) {
+		if (out.main_tree_to_execute !== null || (out.trees.size <= 1 && out.imports.empty) || out.trees.empty) {
+			return
+		}
+		val main = out.trees.head
+		if (main.name === null || main.name.empty) {
+			val taken = out.trees.map[name].toSet
+			var id = "MainTree"
+			for (var k = 2; taken.contains(id); k++) {
+				id = "MainTree" + k
+			}
+			main.name = id
+		}
+		out.attributes += attribute("main_tree_to_execute", main.name)
 	}
 
 	// ------------------------------------------------------------------ blackboard visibility

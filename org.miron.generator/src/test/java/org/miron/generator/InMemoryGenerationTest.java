@@ -74,8 +74,12 @@ public class InMemoryGenerationTest {
 
     /** nominal.bt, lib/extra.bt and model.miron (with the given text) under base. */
     private static Resource models(String base, String model) throws IOException {
+        return models(base, model, NOMINAL);
+    }
+
+    private static Resource models(String base, String model, String nominal) throws IOException {
         XtextResourceSet set = MironStandaloneSetup.doSetup().getInstance(XtextResourceSet.class);
-        load(set, base + "models/nominal.bt", NOMINAL);
+        load(set, base + "models/nominal.bt", nominal);
         load(set, base + "models/lib/extra.bt", EXTRA);
         Resource miron = load(set, base + "models/model.miron", model);
         EcoreUtil.resolveAll(set);
@@ -106,6 +110,38 @@ public class InMemoryGenerationTest {
         assertEquals("model.ext.xml", io.get("tree").asText());
         assertEquals(List.of(), IoJsonSchema.problems(io));
         return include(file(fsa, "model.ext.xml"));
+    }
+
+    /**
+     * Issue 17: a nominal tree in BehaviorTree.CPP's tutorial form (one tree, no ID) is woven with
+     * a tree of another file: BehaviorTree.CPP would count the included tree too, so the woven
+     * file names its main tree and says which one it is.
+     */
+    @Test
+    public void anUnnamedMainTreeIsNamedInTheWovenTree() throws IOException {
+        String unnamed = """
+                <root>
+                  <BehaviorTree>
+                    <Sequence name="seq">
+                      <Action ID="A" name="first"/>
+                      <Action ID="B" name="last"/>
+                    </Sequence>
+                  </BehaviorTree>
+                </root>
+                """;
+        Resource model = models("memory:/", """
+                import "nominal.bt" as bt
+                import "lib/extra.bt" as lib
+
+                @varpoint v : enum { a : lib.Extra, nominal : preset } before bt.last
+                """, unnamed);
+        InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
+        new MironGenerator().doGenerate(model, fsa, new GeneratorContext());
+        String tree = file(fsa, "model.ext.xml").toString();
+        assertTrue(tree, tree.contains("<root main_tree_to_execute=\"MainTree\">"));
+        assertTrue(tree, tree.contains("<BehaviorTree ID=\"MainTree\">"));
+        assertTrue(tree, tree.contains("monitoring_parallel"));
+        assertTrue(tree, tree.contains("<SubTreePlus ID=\"Extra\"/>"));
     }
 
     @Test

@@ -11,6 +11,7 @@ import org.eclipse.xtext.formatting2.regionaccess.IComment
 import org.miron.bt.bt.Attribute
 import org.miron.bt.bt.BTModel
 import org.miron.bt.bt.BehaviorTree
+import org.miron.bt.bt.ForeignElement
 import org.miron.bt.bt.Import
 import org.miron.bt.bt.TreeNode
 import org.miron.bt.bt.TreeNodesModel
@@ -42,6 +43,11 @@ class BtFormatter extends AbstractFormatter2 {
 	def dispatch void format(TreeNode node, extension IFormattableDocument document) {
 		node.formatElement(document)
 		node.eContents.forEach[format]
+	}
+
+	def dispatch void format(ForeignElement element, extension IFormattableDocument document) {
+		element.formatElement(document)
+		element.eContents.forEach[format]
 	}
 
 	def dispatch void format(TreeNodesModel nodesModel, extension IFormattableDocument document) {

@@ -12,6 +12,7 @@ import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.resource.XtextResourceSet;
 import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.resource.BtXmlFiles;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtTrees;
 
@@ -20,7 +21,7 @@ import com.google.inject.Provider;
 import com.google.inject.Singleton;
 
 /**
- * Finds the include that would make an unknown SubTree ID visible: a .bt file in the same folder,
+ * Finds the include that would make an unknown SubTree ID visible: a .bt (or BT .xml) file in the same folder,
  * not included yet, that defines a tree with that ID. Sibling files are read from disk, each
  * parsed in a resource set of its own (nothing is added to the one being validated), and their
  * tree IDs are remembered per file path, modification time and size.
@@ -56,7 +57,7 @@ public class MissingIncludes {
         Set<URI> included = BtGlobalScopeProvider.includesOf(resource);
         List<File> siblings = new ArrayList<>();
         for (File f : files) {
-            if (f.isFile() && f.getName().endsWith(".bt") && !f.equals(self)
+            if (f.isFile() && isTreeFile(f) && !f.equals(self)
                     && !included.contains(URI.createFileURI(f.getAbsolutePath()))) {
                 siblings.add(f);
             }
@@ -68,6 +69,12 @@ public class MissingIncludes {
             }
         }
         return null;
+    }
+
+    /** .bt files, and .xml files that are BehaviorTree.CPP trees (not pom.xml and the like). */
+    private static boolean isTreeFile(File f) {
+        return f.getName().endsWith(".bt") || f.getName().endsWith(".xml")
+                && BtXmlFiles.looksLikeBehaviourTree(URI.createFileURI(f.getAbsolutePath()));
     }
 
     private synchronized TreeIds treeIds(File file) {

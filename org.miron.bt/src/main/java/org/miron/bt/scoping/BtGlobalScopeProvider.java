@@ -10,6 +10,7 @@ import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.scoping.impl.ImportUriGlobalScopeProvider;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.Import;
+import org.miron.bt.resource.BtXmlFiles;
 
 /**
  * Trees visible from a file: those of every file it includes, transitively, as BehaviorTree.CPP
@@ -29,7 +30,10 @@ public class BtGlobalScopeProvider extends ImportUriGlobalScopeProvider {
                     continue;
                 }
                 Resource included = EcoreUtil2.getResource(resource, uri.toString());
-                if (included != null) {
+                if (!BtXmlFiles.isTree(included)) {
+                    // not a BT file (e.g. an .xml of another kind): nothing to see, the validator says so
+                    result.remove(uri);
+                } else {
                     pending.add(included);
                 }
             }

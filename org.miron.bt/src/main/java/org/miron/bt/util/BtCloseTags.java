@@ -9,7 +9,9 @@ import org.eclipse.xtext.RuleCall;
 import org.eclipse.xtext.TerminalRule;
 import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.ILeafNode;
+import org.eclipse.xtext.nodemodel.INode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.miron.bt.bt.ForeignElement;
 import org.miron.bt.bt.TreeNode;
 
 /**
@@ -39,6 +41,27 @@ public final class BtCloseTags {
         }
         ILeafNode candidate = tokens.get(tokens.size() - 2);
         return isUnassignedName(candidate) ? candidate : null;
+    }
+
+    /** The leaf holding the closing name of an element BehaviorTree.CPP ignores, or null for {@code <x/>}. */
+    public static ILeafNode closingName(ForeignElement element) {
+        ICompositeNode node = NodeModelUtils.getNode(element);
+        if (node == null) {
+            return null;
+        }
+        // '</' ForeignName '>': the last unassigned ForeignName call among the element's own children.
+        ILeafNode closing = null;
+        for (INode child : node.getChildren()) {
+            if (child.getGrammarElement() instanceof RuleCall call && "ForeignName".equals(call.getRule().getName())
+                    && GrammarUtil.containingAssignment(call) == null) {
+                for (ILeafNode leaf : child.getLeafNodes()) {
+                    if (!leaf.isHidden()) {
+                        closing = leaf;
+                    }
+                }
+            }
+        }
+        return closing;
     }
 
     private static boolean isUnassignedName(ILeafNode leaf) {

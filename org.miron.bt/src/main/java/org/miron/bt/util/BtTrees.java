@@ -13,6 +13,7 @@ import java.util.regex.Pattern;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
+import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.EcoreUtil2;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
@@ -76,17 +77,43 @@ public final class BtTrees {
         return trees;
     }
 
-    /** True when another file loaded in the same resource set includes this one. */
-    public static boolean isIncludedByAnother(Resource resource) {
-        if (resource.getResourceSet() == null) {
-            return false;
+    /** The trees of a BT resource, or null when the resource is missing or not a BT file. */
+    public static List<BehaviorTree> treesOrNull(Resource resource) {
+        return resource == null || resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof BTModel)
+                ? null : treesOf(resource);
+    }
+
+    /** How messages name a tree: by its ID, or as "the BehaviorTree without ID". */
+    public static String displayName(BehaviorTree tree) {
+        return tree.getName() == null || tree.getName().isEmpty() ? "the BehaviorTree without ID"
+                : "BehaviorTree '" + tree.getName() + "'";
+    }
+
+    /**
+     * The name a tree runs under: its ID, else (a file's tree without ID) "BehaviorTree_k", k
+     * counting the file's trees without ID from 0, the form BehaviorTree.CPP 3 gives them.
+     */
+    public static String runName(BehaviorTree tree) {
+        if (tree.getName() != null && !tree.getName().isEmpty()) {
+            return tree.getName();
         }
-        for (Resource other : List.copyOf(resource.getResourceSet().getResources())) {
-            if (other != resource && BtGlobalScopeProvider.includesOf(other).contains(resource.getURI())) {
-                return true;
+        int k = 0;
+        if (tree.eContainer() instanceof BTModel model) {
+            for (BehaviorTree other : model.getTrees()) {
+                if (other == tree) {
+                    break;
+                }
+                if (other.getName() == null || other.getName().isEmpty()) {
+                    k++;
+                }
             }
         }
-        return false;
+        return "BehaviorTree_" + k;
+    }
+
+    /** Same content modulo whitespace and comments: the same elements, attributes and references. */
+    public static boolean sameContent(BehaviorTree a, BehaviorTree b) {
+        return EcoreUtil.equals(a, b);
     }
 
     /** Node IDs declared in a TreeNodesModel (its content is opaque, so this reads it leniently). */

@@ -26,7 +26,10 @@ public final class BtIssueCodes {
 
     // ------------------------------------------------------------------ files and trees
 
-    /** Several trees and no main_tree_to_execute. */
+    /**
+     * Several trees and no main_tree_to_execute. No longer reported for a file by itself (issue 17:
+     * such a file is an include library, whichever files are loaded with it); kept for its meaning.
+     */
     public static final String MAIN_TREE_REQUIRED = "bt.main-tree-required";
     /** main_tree_to_execute names no tree. Data: the closest visible tree IDs, nearest first. */
     public static final String UNKNOWN_MAIN_TREE = "bt.unknown-main-tree";
@@ -34,10 +37,18 @@ public final class BtIssueCodes {
     public static final String INCLUDE_NOT_FOUND = "bt.include-not-found";
     /** A file that includes itself. */
     public static final String SELF_INCLUDE = "bt.self-include";
-    /** A BehaviorTree without ID. */
+    /** A BehaviorTree without ID in a file with several trees (a file's single tree needs none). */
     public static final String TREE_WITHOUT_ID = "bt.tree-without-id";
-    /** A BehaviorTree ID used twice (in the file or its includes). */
+    /** A BehaviorTree ID used twice (in the file or its includes) for different trees. */
     public static final String DUPLICATE_TREE_ID = "bt.duplicate-tree-id";
+    /** A BehaviorTree defined again with the same content (a warning; references use the first). */
+    public static final String DUPLICATE_IDENTICAL_TREE = "bt.duplicate-identical-tree";
+    /** A second TreeNodesModel under root. */
+    public static final String DUPLICATE_NODES_MODEL = "bt.duplicate-nodes-model";
+    /** An included file that is not a behaviour-tree file (its root element is not root). */
+    public static final String INCLUDE_NOT_BT = "bt.include-not-bt";
+    /** An element under root that BehaviorTree.CPP ignores. Data: the closest element it reads, if any. */
+    public static final String UNKNOWN_ELEMENT = "bt.unknown-element";
     /** A BehaviorTree with no root node. */
     public static final String TREE_WITHOUT_ROOT = "bt.tree-without-root";
     /** A BehaviorTree with more than one root node (reported on each extra root). */
@@ -51,7 +62,11 @@ public final class BtIssueCodes {
     public static final String CONDITIONAL_CHILD_COUNT = "bt.conditional-child-count";
     /** A decorator (built-in or declared in TreeNodesModel) without exactly one child. */
     public static final String DECORATOR_CHILD_COUNT = "bt.decorator-child-count";
-    /** A node declared as an Action or a Condition in TreeNodesModel, written with children. */
+    /**
+     * A leaf written with children: Action and Condition (errors, as in BehaviorTree.CPP), the
+     * built-in leaves (warnings: BehaviorTree.CPP 3 loads them and drops the children), or a node
+     * declared as an Action or a Condition in TreeNodesModel.
+     */
     public static final String LEAF_WITH_CHILDREN = "bt.leaf-with-children";
     /** A closing tag that does not match its opening tag. Data: the tag to close, e.g. {@code Sequence}. */
     public static final String CLOSE_TAG_MISMATCH = "bt.close-tag-mismatch";
@@ -93,4 +108,9 @@ public final class BtIssueCodes {
     public static final String DELAY_NEEDS_3_8 = "bt.delay-needs-3-8";
     /** A compact node that is neither a tree nor declared in TreeNodesModel. Data: the node's tag. */
     public static final String UNDECLARED_NODE = "bt.undeclared-node";
+    /**
+     * A compact tag naming a tree ({@code <Check/>}), which BehaviorTree.CPP 3.8 does not recognise.
+     * Data: the element to write instead, e.g. {@code <SubTree ID="Check"/>}.
+     */
+    public static final String COMPACT_SUBTREE = "bt.compact-subtree";
 }

@@ -25,8 +25,10 @@ import org.miron.bt.bt.Delay;
 import org.miron.bt.bt.ControlNode;
 import org.miron.bt.bt.DecoratorNode;
 import org.miron.bt.bt.FallbackStar;
+import org.miron.bt.bt.ForeignElement;
 import org.miron.bt.bt.IfThenElse;
 import org.miron.bt.bt.Import;
+import org.miron.bt.bt.LeafNode;
 import org.miron.bt.bt.Parallel;
 import org.miron.bt.bt.Repeat;
 import org.miron.bt.bt.RetryUntilSuccess;
@@ -36,6 +38,7 @@ import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.bt.WhileDoElse;
+import org.miron.bt.resource.BtXmlFiles;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtCloseTags;
@@ -55,16 +58,24 @@ public class BtValidator extends AbstractBtValidator {
     public void checkMainTree(BTModel model) {
         String main = model.getMain_tree_to_execute();
         Map<String, BehaviorTree> visible = BtTrees.visibleTrees(model.eResource());
-        if (main == null) {
-            // Only the file BehaviorTree.CPP loads first needs it; included files are libraries.
-            if (model.getTrees().size() > 1 && !BtTrees.isIncludedByAnother(model.eResource())) {
-                error("main_tree_to_execute is required when a file holds several trees ("
-                        + model.getTrees().size() + " here)", model, null, MAIN_TREE_REQUIRED);
-            }
-        } else if (!visible.containsKey(main)) {
+        // Without it, a file with several trees is an include library: only what runs a file (the
+        // executor, the weaver) needs its main tree, so a file's verdict never depends on which
+        // other files are loaded with it.
+        if (main != null && !visible.containsKey(main)) {
             error("main_tree_to_execute '" + main + "' names no BehaviorTree of this file or its includes",
                     attribute(model.getAttributes(), "main_tree_to_execute"), BT.getAttribute_Value(),
                     UNKNOWN_MAIN_TREE, Suggestions.closest(main, visible.keySet()).toArray(new String[0]));
+        }
+    }
+
+    /** BehaviorTree.CPP 3: "Only a single node <TreeNodesModel> is supported" (the model keeps the last). */
+    @Check
+    public void checkSingleNodesModel(BTModel model) {
+        List<org.eclipse.xtext.nodemodel.INode> written = org.eclipse.xtext.nodemodel.util.NodeModelUtils
+                .findNodesForFeature(model, BT.getBTModel_Nodesmodel());
+        for (int i = 1; i < written.size(); i++) {
+            acceptError("only one <TreeNodesModel> is allowed under <root>: merge the declarations", model,
+                    written.get(i).getOffset(), "<TreeNodesModel>".length(), DUPLICATE_NODES_MODEL);
         }
     }
 
@@ -76,27 +87,60 @@ public class BtValidator extends AbstractBtValidator {
                     include, BT.getImport_ImportURI(), INCLUDE_NOT_FOUND);
         } else if (uri.equals(include.eResource().getURI())) {
             error("a file cannot include itself", include, BT.getImport_ImportURI(), SELF_INCLUDE);
+        } else if (!BtXmlFiles.isTree(EcoreUtil2.getResource(include.eResource(), uri.toString()))) {
+            error("included file '" + include.getImportURI() + "' is not a behaviour-tree file (its root element "
+                    + "must be <root>)", include, BT.getImport_ImportURI(), INCLUDE_NOT_BT);
+        }
+    }
+
+    /** BehaviorTree.CPP reads include, BehaviorTree and TreeNodesModel under root, and skips anything else. */
+    @Check
+    public void checkForeignElement(ForeignElement element) {
+        if (element.eContainer() instanceof BTModel) {
+            List<String> closest = Suggestions.closest(element.getTag(), List.of("include", "BehaviorTree",
+                    "TreeNodesModel"));
+            warning("<" + element.getTag() + "> is not read by BehaviorTree.CPP, which ignores it"
+                    + (closest.isEmpty() ? "" : ": did you mean <" + closest.get(0) + ">?"), element,
+                    BT.getForeignElement_Tag(), UNKNOWN_ELEMENT, closest.toArray(new String[0]));
+        }
+        ILeafNode closing = BtCloseTags.closingName(element);
+        if (closing != null && !closing.getText().equals(element.getTag())) {
+            acceptError("</" + closing.getText() + "> does not close <" + element.getTag() + ">: write </"
+                    + element.getTag() + ">", element, closing.getOffset(), closing.getLength(), CLOSE_TAG_MISMATCH,
+                    element.getTag());
         }
     }
 
     @Check
     public void checkTree(BehaviorTree tree) {
         if (tree.getName() == null || tree.getName().isEmpty()) {
-            error("BehaviorTree needs an ID attribute", tree, null, TREE_WITHOUT_ID);
+            // A file's only tree is its main tree, as in BehaviorTree.CPP 3; among several, nothing
+            // can name it (BehaviorTree.CPP loads it under a generated name).
+            if (((BTModel) tree.eContainer()).getTrees().size() > 1) {
+                warning("a BehaviorTree without ID cannot be referenced or named as main_tree_to_execute when the "
+                        + "file holds several trees: give it an ID", tree, null, TREE_WITHOUT_ID);
+            }
         } else {
             checkDuplicateTree(tree);
         }
+        String name = BtTrees.displayName(tree);
         if (tree.getNodes().isEmpty()) {
-            error("BehaviorTree '" + tree.getName() + "' must have exactly one root node, it has none", tree, null,
+            error(name + " must have exactly one root node, it has none", tree, null,
                     TREE_WITHOUT_ROOT);
         }
         for (int i = 1; i < tree.getNodes().size(); i++) {
-            error("BehaviorTree '" + tree.getName() + "' must have exactly one root node: wrap its "
+            error(name + " must have exactly one root node: wrap its "
                     + tree.getNodes().size() + " nodes in a Sequence or another control node",
                     tree.getNodes().get(i), null, TREE_SEVERAL_ROOTS);
         }
     }
 
+    /**
+     * BehaviorTree.CPP 3 keeps the first of two trees with one ID. A second tree with the same
+     * content (whitespace and comments aside) is harmless and only warned about; references
+     * resolve to the first (BtResourceDescriptionStrategy does not export it). A different one is
+     * an error: which of the two a reader means cannot be told.
+     */
     private void checkDuplicateTree(BehaviorTree tree) {
         BTModel model = (BTModel) tree.eContainer();
         for (BehaviorTree other : model.getTrees()) {
@@ -104,19 +148,47 @@ public class BtValidator extends AbstractBtValidator {
                 break;
             }
             if (tree.getName().equals(other.getName())) {
-                error("duplicate BehaviorTree ID '" + tree.getName() + "'", tree, BT.getBehaviorTree_Name(),
-                        DUPLICATE_TREE_ID);
+                reportDuplicate(tree, other, "");
                 return;
             }
         }
         for (Resource included : BtTrees.includedResources(tree.eResource())) {
             for (BehaviorTree other : BtTrees.treesOf(included)) {
                 if (tree.getName().equals(other.getName())) {
-                    error("duplicate BehaviorTree ID '" + tree.getName() + "': also defined in "
-                            + included.getURI().lastSegment(), tree, BT.getBehaviorTree_Name(), DUPLICATE_TREE_ID);
+                    reportDuplicate(tree, other, ": also defined in " + included.getURI().lastSegment());
                     return;
                 }
             }
+        }
+    }
+
+    private void reportDuplicate(BehaviorTree tree, BehaviorTree first, String where) {
+        if (BtTrees.sameContent(tree, first)) {
+            warning("BehaviorTree '" + tree.getName() + "' is defined twice with the same content" + where
+                    + "; the first one is used", tree, BT.getBehaviorTree_Name(), DUPLICATE_IDENTICAL_TREE);
+        } else {
+            error("duplicate BehaviorTree ID '" + tree.getName() + "'" + where, tree, BT.getBehaviorTree_Name(),
+                    DUPLICATE_TREE_ID);
+        }
+    }
+
+    /**
+     * Children inside a leaf: BehaviorTree.CPP rejects them in Action and Condition, and loads
+     * the built-in leaves while dropping them, which is never what the author meant.
+     */
+    @Check
+    public void checkLeafChildren(LeafNode node) {
+        if (node.getSurplus().isEmpty()) {
+            return;
+        }
+        String article = "Action".equals(node.getTag()) || "AlwaysSuccess".equals(node.getTag())
+                || "AlwaysFailure".equals(node.getTag()) ? "an " : "a ";
+        if (node instanceof org.miron.bt.bt.Action || node instanceof Condition) {
+            error(article + node.getTag() + " cannot have children", node.getSurplus().get(0), null,
+                    LEAF_WITH_CHILDREN);
+        } else {
+            warning(article + node.getTag() + " cannot have children: BehaviorTree.CPP 3 ignores them",
+                    node.getSurplus().get(0), null, LEAF_WITH_CHILDREN);
         }
     }
 
@@ -252,7 +324,8 @@ public class BtValidator extends AbstractBtValidator {
             requireAttribute(node, "value_A");
             requireAttribute(node, "value_B");
             String mismatch = node.attribute("return_on_mismatch");
-            if (mismatch != null && !isBlackboardPointer(mismatch)
+            // Empty (as Groot writes unset ports): BehaviorTree.CPP falls back to FAILURE.
+            if (mismatch != null && !mismatch.isEmpty() && !isBlackboardPointer(mismatch)
                     && !Set.of("SUCCESS", "FAILURE", "RUNNING").contains(mismatch)) {
                 error("return_on_mismatch must be SUCCESS, FAILURE or RUNNING, not '" + mismatch + "'",
                         attribute(node.getAttributes(), "return_on_mismatch"), BT.getAttribute_Value(),
@@ -297,7 +370,15 @@ public class BtValidator extends AbstractBtValidator {
             return;
         }
         BTModel model = EcoreUtil2.getContainerOfType(node, BTModel.class);
-        if (model.getNodesmodel() == null || BtTrees.visibleTrees(node.eResource()).containsKey(node.getTag())) {
+        if (BtTrees.visibleTrees(node.eResource()).containsKey(node.getTag())) {
+            // BehaviorTree.CPP 3.8's loader only knows registered nodes by their tag, not trees.
+            String subtree = "<SubTree ID=\"" + node.getTag() + "\"/>";
+            warning("<" + node.getTag() + "/> names a BehaviorTree, which BehaviorTree.CPP 3.8 does not recognise "
+                    + "by its tag (\"Node not recognized\"): write " + subtree, node, BT.getTreeNode_Tag(),
+                    COMPACT_SUBTREE, subtree);
+            return;
+        }
+        if (model.getNodesmodel() == null) {
             return;
         }
         if (!BtTrees.declaredNodeIds(model.getNodesmodel()).contains(node.getTag())) {

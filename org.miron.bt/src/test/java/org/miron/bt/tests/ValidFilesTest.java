@@ -66,4 +66,13 @@ public class ValidFilesTest {
         assertTrue(formatted, EcoreUtil.equals(BtFiles.model(resource), BtFiles.model(again)));
         assertEquals(formatted, BtFormatting.format(again));
     }
+
+    /** Issue 17: what `miron format` writes passes the same checks as the file it formats. */
+    @Test
+    public void formattedOutputValidatesWithoutErrors() throws Exception {
+        String formatted = BtFormatting.format(BtFiles.load(file));
+        List<Issue> errors = BtFiles.validate(BtFiles.parse(formatted, file)).stream()
+                .filter(issue -> issue.getSeverity() == Severity.ERROR).collect(Collectors.toList());
+        assertTrue(formatted + "\n" + BtFiles.describe(errors), errors.isEmpty());
+    }
 }

@@ -12,11 +12,15 @@ import org.eclipse.xtext.naming.IQualifiedNameConverter;
 import org.eclipse.xtext.naming.QualifiedName;
 import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.scoping.IScopeProvider;
+import org.eclipse.emf.ecore.resource.Resource;
+import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BtPackage;
 import org.miron.bt.util.Suggestions;
+import org.miron.dsl.roqme.Import;
 import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.scoping.RoqmeScopeProvider;
+import org.miron.dsl.util.Imports;
 import org.miron.dsl.validation.RoqmeIssueCodes;
 
 import com.google.inject.Inject;
@@ -88,10 +92,30 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
         }
         EObject root = context.eResource() == null || context.eResource().getContents().isEmpty() ? null
                 : context.eResource().getContents().get(0);
+        String unnamed = type == BtPackage.Literals.BEHAVIOR_TREE ? unnamedTreeIn(root) : null;
+        if (unnamed != null) {
+            return " (the BehaviorTree without ID in " + unnamed + " cannot be referenced: give it an ID there)";
+        }
         if (text.indexOf('.') < 0 && root instanceof RoqmeModel && !((RoqmeModel) root).getImports().isEmpty()) {
             return " (elements of an imported file are written with its alias or namespace: x." + text + ")";
         }
         return "";
+    }
+
+    /** The name of an imported BT file holding a tree without ID (BehaviorTree.CPP's tutorial form), or null. */
+    private static String unnamedTreeIn(EObject root) {
+        if (!(root instanceof RoqmeModel model)) {
+            return null;
+        }
+        for (Import imp : model.getImports()) {
+            Resource imported = Imports.load(imp);
+            if (imported != null && !imported.getContents().isEmpty()
+                    && imported.getContents().get(0) instanceof BTModel bt
+                    && bt.getTrees().stream().anyMatch(t -> t.getName() == null || t.getName().isEmpty())) {
+                return imported.getURI().lastSegment();
+            }
+        }
+        return null;
     }
 
     private static String article(String what) {

@@ -41,4 +41,32 @@ public class CrossFileTest {
                 .filter(i -> i.getUriToProblem().lastSegment().equals("uses_broken.miron")).collect(Collectors.toList());
         assertEquals(List.of(), own);
     }
+
+    /** Issue 17: a tree repeated with the same content is one tree for references; a different one is ambiguous. */
+    @Test
+    public void anIdenticallyRepeatedTreeResolvesToTheFirstAndADifferentOneIsAmbiguous() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_dup_trees.miron"));
+        List<String> issues = Models.validateAll(resource).stream().map(Models::format).collect(Collectors.toList());
+        List<String> own = issues.stream().filter(i -> i.startsWith("uses_dup_trees.miron")).collect(Collectors.toList());
+        assertEquals(String.join("\n", issues), 1, own.size());
+        assertTrue(own.get(0), own.get(0).contains("t.Wait") && own.get(0).contains("error"));
+        assertTrue(issues.toString(), issues.stream().anyMatch(i -> i.startsWith("dup_trees.bt:11:")
+                && i.contains("warning") && i.contains("defined twice with the same content")));
+        assertTrue(issues.toString(), issues.stream().anyMatch(i -> i.startsWith("dup_trees.bt:17:")
+                && i.contains("error") && i.contains("duplicate BehaviorTree ID 'Wait'")));
+        org.miron.dsl.miron.BehaviorTreeLiteral charge = org.eclipse.xtext.EcoreUtil2.getAllContentsOfType(
+                resource.getContents().get(0), org.miron.dsl.miron.BehaviorTreeLiteral.class).get(0);
+        org.miron.bt.bt.BTModel tree = (org.miron.bt.bt.BTModel) charge.getReference().eResource().getContents().get(0);
+        assertTrue(charge.getReference() == tree.getTrees().get(1));
+    }
+
+    /** Issue 17: a tree without ID is valid BT, and a .miron that tries to name it is told why it cannot. */
+    @Test
+    public void aTreeWithoutIdCannotBeReferencedAndTheMessageSaysSo() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_unnamed_tree.miron"));
+        List<String> errors = Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .map(Models::format).collect(Collectors.toList());
+        assertEquals(List.of("uses_unnamed_tree.miron:4:26: error: unknown behavior tree 't.Main' (the BehaviorTree "
+                + "without ID in unnamed_tree.bt cannot be referenced: give it an ID there)"), errors);
+    }
 }

@@ -58,7 +58,7 @@ public class ModelLoader {
     }
 
     public static String supportedExtensions() {
-        return ".bt (or a woven .xml), .roqme or .miron";
+        return ".bt or .xml (BehaviorTree.CPP trees, woven trees), .roqme or .miron";
     }
 
     public XtextResourceSet resourceSet() {

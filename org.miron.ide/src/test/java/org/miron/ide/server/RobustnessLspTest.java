@@ -126,6 +126,30 @@ public class RobustnessLspTest {
         }
     }
 
+    /** Issue 17: BehaviorTree.CPP .xml trees include each other in the editor as they do in `miron check`. */
+    @Test
+    public void xmlTreesIncludeXmlTrees() throws Exception {
+        Path other = Workspaces.copyOfExample("intralogistics");
+        try (LspClient fresh = new LspClient()) {
+            Files.createDirectories(other.resolve("sub"));
+            Files.writeString(other.resolve("sub/child.xml"), "<root main_tree_to_execute=\"Child\">"
+                    + "<BehaviorTree ID=\"Child\"><AlwaysSuccess/></BehaviorTree>"
+                    + "<BehaviorTree ID=\"Other\"><AlwaysSuccess/></BehaviorTree></root>\n");
+            Files.writeString(other.resolve("main.xml"), "<root><include path=\"sub/child.xml\"/>"
+                    + "<BehaviorTree><SubTree ID=\"Child\"/></BehaviorTree></root>\n");
+            fresh.initialize(other);
+            String main = fresh.open(other.resolve("main.xml"));
+            fresh.awaitDiagnostics(main, d -> !IntralogisticsLspTest.hasErrors(d));
+            assertTrue(String.valueOf(fresh.published(main)), fresh.published(main).isEmpty());
+            String child = fresh.open(other.resolve("sub/child.xml"));
+            fresh.awaitDiagnostics(child, d -> !IntralogisticsLspTest.hasErrors(d));
+            assertTrue(String.valueOf(fresh.published(child)), fresh.published(child).isEmpty());
+            assertAlive();
+        } finally {
+            Workspaces.delete(other);
+        }
+    }
+
     /** Waits for a request to end, with an answer or an error response: either is fine, a hang is not. */
     private static void settle(java.util.concurrent.CompletableFuture<?> request) throws Exception {
         try {

@@ -31,7 +31,9 @@ public class BlackboardCheckNode extends DecoratorNode {
             return child.executeTick();
         }
         resetChild();
-        return ports().get("return_on_mismatch").map(Conversions::toStatus).orElse(NodeStatus.FAILURE);
+        // Empty (as Groot writes unset ports) falls back to FAILURE, as in BehaviorTree.CPP 3.
+        return ports().get("return_on_mismatch").filter(v -> !String.valueOf(v).isBlank())
+                .map(Conversions::toStatus).orElse(NodeStatus.FAILURE);
     }
 
     /** The value as the check's type, or empty when missing or not convertible (a mismatch). */

@@ -21,7 +21,7 @@ import org.miron.bt.bt.BTModel;
 import com.google.inject.Injector;
 
 /**
- * Loads a .bt (or woven .xml) file through the BT language with its includes, and refuses it when
+ * Loads a .bt or BehaviorTree.CPP .xml file (woven trees too) through the BT language with its includes, and refuses it when
  * the parser, the linker or the validator reports an error, listing them all with their position.
  */
 public final class BtLoader {

@@ -101,7 +101,7 @@ public final class TreeBuilder {
     public Tree build(BehaviorTree tree) {
         Blackboard blackboard = Blackboard.create();
         Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
-        return new Tree(tree.getName(), root, blackboard, context);
+        return new Tree(BtTrees.runName(tree), root, blackboard, context);
     }
 
     private Map<String, BehaviorTree> trees(EObject object) {
@@ -118,15 +118,17 @@ public final class TreeBuilder {
     }
 
     private Node buildTree(BehaviorTree tree, Blackboard blackboard, String parentPath, Deque<String> stack) {
-        String where = parentPath.isEmpty() ? tree.getName() : parentPath;
-        if (stack.contains(tree.getName())) {
-            throw new BtBuildException(where + ": tree '" + tree.getName() + "' includes itself through " + String.join(" -> ", stack));
+        // A file's tree without ID runs under the name BehaviorTree.CPP 3 gives it (BehaviorTree_0).
+        String name = BtTrees.runName(tree);
+        String where = parentPath.isEmpty() ? name : parentPath;
+        if (stack.contains(name)) {
+            throw new BtBuildException(where + ": tree '" + name + "' includes itself through " + String.join(" -> ", stack));
         }
         if (tree.getNodes().size() != 1) {
-            throw new BtBuildException(where + ": tree '" + tree.getName() + "' must have exactly one root node, has " + tree.getNodes().size());
+            throw new BtBuildException(where + ": tree '" + name + "' must have exactly one root node, has " + tree.getNodes().size());
         }
-        stack.addLast(tree.getName());
-        Node root = buildNode(tree.getNodes().get(0), blackboard, parentPath.isEmpty() ? tree.getName() : parentPath, stack);
+        stack.addLast(name);
+        Node root = buildNode(tree.getNodes().get(0), blackboard, parentPath.isEmpty() ? name : parentPath, stack);
         stack.removeLast();
         return root;
     }

@@ -66,6 +66,18 @@ public class LoaderTest {
     }
 
     @Test
+    public void anXmlTreeWithoutIdRunsAndIncludesAnotherXmlFile() {
+        ScriptedAction a = ScriptedAction.register(registry, "A");
+        ScriptedAction c = ScriptedAction.register(registry, "C");
+        Tree tree = new TreeBuilder(registry, new TreeContext()).build(Fixtures.load("xml/main.xml"));
+        assertEquals("BehaviorTree_0", tree.id());
+        assertEquals(NodeStatus.SUCCESS, tree.tickRoot());
+        assertEquals(1, a.ticks);
+        assertEquals(1, c.ticks);
+        assertEquals("BehaviorTree_0/Sequence/Child/C", tree.find("C").get().path());
+    }
+
+    @Test
     public void warningsAreReturnedNotThrown() {
         BtLoader.Loaded loaded = new BtLoader().load(Fixtures.resource("decorators.bt"));
         assertTrue(loaded.warnings().toString(), loaded.warnings().stream().anyMatch(w -> w.contains("RetryUntilSuccesful")));
