@@ -33,6 +33,11 @@ public final class BtScripts {
         }
         EObject root = result.getRootASTElement();
         Script script = root instanceof Script ? (Script) root : AstFactory.eINSTANCE.createScript();
+        if (errors.isEmpty()) {
+            // What BT.CPP's grammar rejects and this one's cannot express.
+            NumberSuffixes.check(result.getRootNode(), text, errors);
+            OperatorGroups.check(script, errors);
+        }
         return new ParsedScript(text, script, errors);
     }
 
