@@ -25,12 +25,32 @@ public final class Tree {
         this.context = context;
     }
 
-    /** Ticks the root once; a finished root is set back to IDLE so the next tick starts over (as BT.CPP 3). */
+    /**
+     * Ticks the root once; a finished root is set back to IDLE so the next tick starts over (as
+     * BT.CPP 3). In a version-4 tree this is BT.CPP 4's tickOnce: while the root is RUNNING and a
+     * node asked for a wake-up, the root is ticked again at once (at most
+     * {@link TreeContext#maxLoopsPerTick()} times, so Repeat(-1) over a child that succeeds at once
+     * cannot hang the tree).
+     */
     public NodeStatus tickRoot() {
+        return tick(true);
+    }
+
+    /** BT.CPP 4's tickExactlyOnce: one tick of the root, wake-ups are not followed. */
+    public NodeStatus tickExactlyOnce() {
+        return tick(false);
+    }
+
+    private NodeStatus tick(boolean followWakeUps) {
         for (BlackboardFeed feed : feeds) {
             feed.applyTo(blackboard);
         }
+        context.takeWakeUp();
         NodeStatus status = root.executeTick();
+        for (int again = 0; followWakeUps && status == NodeStatus.RUNNING && again < context.maxLoopsPerTick()
+                && context.takeWakeUp(); again++) {
+            status = root.executeTick();
+        }
         if (status.isCompleted()) {
             root.halt();
         }

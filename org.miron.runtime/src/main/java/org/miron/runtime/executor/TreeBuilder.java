@@ -65,6 +65,8 @@ public final class TreeBuilder {
     private final ActionRegistry registry;
     private final TreeContext context;
     private final Map<Resource, Map<String, BehaviorTree>> visibleTrees = new HashMap<>();
+    /** Makes the version-4 nodes while a version-4 tree is built; null for version 3. */
+    private V4Nodes v4;
 
     public TreeBuilder(ActionRegistry registry, TreeContext context) {
         this.registry = registry;
@@ -98,10 +100,16 @@ public final class TreeBuilder {
         return build(tree);
     }
 
+    /** The tree, with the semantics of its file's version (BTCPP_format, absent = 3). */
     public Tree build(BehaviorTree tree) {
         Blackboard blackboard = Blackboard.create();
-        Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
-        return new Tree(tree.getName(), root, blackboard, context);
+        v4 = BtFormat.of(tree) == 4 ? new V4Nodes(registry.scriptingEnums()) : null;
+        try {
+            Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
+            return new Tree(tree.getName(), root, blackboard, context);
+        } finally {
+            v4 = null;
+        }
     }
 
     private Map<String, BehaviorTree> trees(EObject object) {
@@ -135,6 +143,61 @@ public final class TreeBuilder {
         String name = displayName(node);
         String path = parentPath + "/" + name;
         NodeInfo info = new NodeInfo(name, path, new Ports(path, attributes(node), blackboard), context);
+        if (v4 == null) {
+            return buildNode(node, info, blackboard, stack);
+        }
+        declarePorts(info);
+        Node built;
+        if (V4Nodes.isV4Builtin(node.getTag()) && !(node instanceof SubtreeNode)) {
+            List<Node> children = new ArrayList<>();
+            for (TreeNode child : V4Nodes.children(node)) {
+                children.add(buildNode(child, blackboard, path, stack));
+            }
+            built = v4.create(node.getTag(), info, children);
+        } else if (node instanceof SubtreeNode subtree) {
+            built = subtreeV4(target(subtree, info), info, blackboard, stack);
+        } else {
+            built = buildNode(node, info, blackboard, stack);
+        }
+        built.useConditions(v4.conditions(node, path));
+        return built;
+    }
+
+    /** BT.CPP 4 creates, when building, an entry without a value for every port pointing at a key. */
+    private static void declarePorts(NodeInfo info) {
+        info.ports().attributes().forEach((port, value) -> {
+            if (!port.startsWith("_") && !port.equals("name") && !port.equals("ID")) {
+                Ports.blackboardKey(port, value).ifPresent(info.ports().blackboard()::declare);
+            }
+        });
+    }
+
+    /**
+     * Version-4 SubTree: always its own blackboard; {@code port="{parentKey}"} (or {@code {=}}, the
+     * key of the same name) remaps, a literal is written into the subtree's blackboard as text,
+     * {@code _autoremap="true"} makes every other key (not starting with '_') the parent's.
+     */
+    private Node subtreeV4(BehaviorTree tree, NodeInfo info, Blackboard parent, Deque<String> stack) {
+        Blackboard blackboard = parent.createChild();
+        info.ports().attributes().forEach((port, value) -> {
+            if (port.equals("name") || port.equals("ID") || port.startsWith("_")) {
+                return;
+            }
+            var key = Ports.blackboardKey(port, value);
+            if (key.isPresent()) {
+                blackboard.remap(port, key.get());
+            } else {
+                blackboard.set(port, value);
+            }
+        });
+        if (booleanAttribute(info, "_autoremap")) {
+            blackboard.setAutoRemap(true);
+        }
+        return new SubTreeNode(info, tree.getName(), blackboard, buildTree(tree, blackboard, info.path(), stack));
+    }
+
+    private Node buildNode(TreeNode node, NodeInfo info, Blackboard blackboard, Deque<String> stack) {
+        String path = info.path();
         if (node instanceof ControlNode control) {
             return control(control, info, childrenOf(control, blackboard, path, stack));
         }
@@ -171,7 +234,7 @@ public final class TreeBuilder {
                 // compact form <X .../>: a tree ID used as a tag is a SubTree, anything else an action ID
                 BehaviorTree tree = trees(node).get(node.getTag());
                 if (tree != null) {
-                    return plainSubtree(tree, info, blackboard, stack);
+                    return v4 != null ? subtreeV4(tree, info, blackboard, stack) : plainSubtree(tree, info, blackboard, stack);
                 }
                 return registry.create(new ActionSpec(node.getTag(), ActionSpec.Kind.ACTION, info));
             }
