@@ -26,13 +26,21 @@ public final class BtScripts {
      */
     public static ParsedScript parse(String text) {
         IParseResult result = parser().parse(new StringReader(text));
-        List<ScriptSyntaxError> errors = new ArrayList<>();
-        for (INode node : result.getSyntaxErrors()) {
-            errors.add(new ScriptSyntaxError(node.getOffset(), node.getLength(),
-                    node.getSyntaxErrorMessage().getMessage()));
-        }
         EObject root = result.getRootASTElement();
         Script script = root instanceof Script ? (Script) root : AstFactory.eINSTANCE.createScript();
+        List<ScriptSyntaxError> errors = new ArrayList<>();
+        // What BT.CPP's grammar rejects and this one's cannot express: bad number suffixes come
+        // first (they also confuse the parser), operator mixing needs a complete tree.
+        NumberSuffixes.check(text, errors);
+        if (errors.isEmpty()) {
+            for (INode node : result.getSyntaxErrors()) {
+                errors.add(new ScriptSyntaxError(node.getOffset(), node.getLength(),
+                        SyntaxMessages.rephrase(node.getSyntaxErrorMessage().getMessage())));
+            }
+        }
+        if (errors.isEmpty()) {
+            OperatorGroups.check(script, errors);
+        }
         return new ParsedScript(text, script, errors);
     }
 

@@ -1,5 +1,7 @@
 package org.miron.bt.util;
 
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.xtext.EcoreUtil2;
 import org.miron.bt.bt.BTModel;
 
 /** The BehaviorTree.CPP version a file is written for, from its root's BTCPP_format attribute. */
@@ -23,5 +25,11 @@ public final class BtFormats {
         } catch (NumberFormatException e) {
             return 0;
         }
+    }
+
+    /** The version of the file an element belongs to (the default for an element outside a file). */
+    public static int versionOf(EObject element) {
+        BTModel model = EcoreUtil2.getContainerOfType(element, BTModel.class);
+        return model == null ? DEFAULT_VERSION : version(model);
     }
 }

@@ -93,4 +93,36 @@ public final class BtIssueCodes {
     public static final String DELAY_NEEDS_3_8 = "bt.delay-needs-3-8";
     /** A compact node that is neither a tree nor declared in TreeNodesModel. Data: the node's tag. */
     public static final String UNDECLARED_NODE = "bt.undeclared-node";
+
+    // ------------------------------------------------------------------ BehaviorTree.CPP versions (3 and 4)
+
+    /** BTCPP_format other than 3 or 4. Data: {@code 4}. */
+    public static final String UNSUPPORTED_FORMAT = "bt.unsupported-format";
+    /**
+     * An element BehaviorTree.CPP 4 removed, in a BTCPP_format="4" file. Data: the version-4
+     * replacement tag, e.g. {@code SequenceWithMemory} (none when there is no direct one).
+     */
+    public static final String V3_ONLY_ELEMENT = "bt.v3-only-element";
+    /**
+     * A BehaviorTree.CPP 4 element in a version-3 file (no BTCPP_format). Data: the version-3
+     * replacement tag when there is one, e.g. {@code SequenceStar}.
+     */
+    public static final String V4_ONLY_ELEMENT = "bt.v4-only-element";
+    /** A version-3 attribute in a version-4 file (__shared_blackboard, success_threshold...). Data: the replacement attribute. */
+    public static final String V3_ONLY_ATTRIBUTE = "bt.v3-only-attribute";
+    /** A version-4 attribute in a version-3 file (_skipIf.._post, _autoremap, success_count...). Data: the replacement, if any. */
+    public static final String V4_ONLY_ATTRIBUTE = "bt.v4-only-attribute";
+    /** A boolean port whose value is not true/false/1/0 (as BT.CPP converts it). */
+    public static final String NOT_A_BOOLEAN = "bt.not-a-boolean";
+    /** A Loop queue whose literal elements do not convert to the loop's type. */
+    public static final String BAD_LOOP_QUEUE = "bt.bad-loop-queue";
+
+    // ------------------------------------------------------------------ scripts (BehaviorTree.CPP 4)
+
+    /** A script (code, if, _skipIf.._post) that BT.CPP's script parser rejects; reported at the offending character. */
+    public static final String SCRIPT_SYNTAX_ERROR = "bt.script-syntax-error";
+    /** An assignment whose left side is not a blackboard key (fails on every tick). */
+    public static final String SCRIPT_ASSIGNMENT_TARGET = "bt.script-assignment-target";
+    /** A string literal used with an arithmetic or bitwise operator (fails on every tick). */
+    public static final String SCRIPT_TYPE_MISMATCH = "bt.script-type-mismatch";
 }

@@ -12,6 +12,7 @@ import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.EcoreUtil2;
 import org.eclipse.xtext.nodemodel.ILeafNode;
 import org.eclipse.xtext.validation.Check;
+import org.eclipse.xtext.validation.ComposedChecks;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
@@ -39,6 +40,7 @@ import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtCloseTags;
+import org.miron.bt.util.BtFormats;
 import org.miron.bt.util.BtTrees;
 import org.miron.bt.util.Suggestions;
 
@@ -47,6 +49,7 @@ import org.miron.bt.util.Suggestions;
  * sees every mistake with its position. Where a file is valid but will not load in current
  * BehaviorTree.CPP 3 releases, a warning says what to write instead.
  */
+@ComposedChecks(validators = { BtVersionValidator.class, BtV4Validator.class })
 public class BtValidator extends AbstractBtValidator {
 
     private static final BtPackage BT = BtPackage.eINSTANCE;
@@ -160,6 +163,9 @@ public class BtValidator extends AbstractBtValidator {
 
     @Check
     public void checkParallel(Parallel node) {
+        if (BtFormats.versionOf(node) != 3 || "ParallelAll".equals(node.getTag())) {
+            return; // BtV4Validator; ParallelAll is an error in version 3
+        }
         int children = node.getNodes().size();
         Integer success = checkInteger(node, "success_threshold", true, Integer.MIN_VALUE);
         Integer failure = checkInteger(node, "failure_threshold", false, Integer.MIN_VALUE);
@@ -219,7 +225,7 @@ public class BtValidator extends AbstractBtValidator {
     @Check
     public void checkRetry(RetryUntilSuccess node) {
         checkInteger(node, "num_attempts", true, -1);
-        if ("RetryUntilSuccesful".equals(node.getTag())) {
+        if ("RetryUntilSuccesful".equals(node.getTag()) && BtFormats.versionOf(node) == 3) {
             warning("RetryUntilSuccesful is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load "
                     + "RetryUntilSuccessful", node, BT.getTreeNode_Tag(), RETRY_OLD_SPELLING,
                     "RetryUntilSuccessful");
@@ -234,12 +240,17 @@ public class BtValidator extends AbstractBtValidator {
     @Check
     public void checkDelay(Delay node) {
         checkInteger(node, "delay_msec", true, 0);
-        warning("Delay needs BehaviorTree.CPP 3.8 or later; earlier 3.x releases do not register it", node,
-                BT.getTreeNode_Tag(), DELAY_NEEDS_3_8);
+        if (BtFormats.versionOf(node) == 3) {
+            warning("Delay needs BehaviorTree.CPP 3.8 or later; earlier 3.x releases do not register it", node,
+                    BT.getTreeNode_Tag(), DELAY_NEEDS_3_8);
+        }
     }
 
     @Check
     public void checkFallbackStar(FallbackStar node) {
+        if (BtFormats.versionOf(node) != 3) {
+            return; // an error there (BtVersionValidator)
+        }
         warning("FallbackStar is not registered in BehaviorTree.CPP 3; write Fallback (or ReactiveFallback) "
                 + "for files that must load there", node, BT.getTreeNode_Tag(), FALLBACK_STAR,
                 "Fallback", "ReactiveFallback");

@@ -111,4 +111,27 @@ public class ScriptParserTest {
     public void assignmentIsNotAssociative() {
         assertTrue(BtScripts.parse("a = b = 1").hasErrors());
     }
+
+    @Test
+    public void trailingAndEmptyStatementsAreErrors() {
+        assertTrue(BtScripts.parse("a := 1;").hasErrors());
+        assertTrue(BtScripts.parse("a := 1;; b := 2").hasErrors());
+        assertTrue(BtScripts.parse("a := b\nc := 2").hasErrors());
+    }
+
+    @Test
+    public void numbersWithSuffixesAreErrorsAtTheSuffix() {
+        assertEquals(6, BtScripts.parse("a := 1..2").getErrors().get(0).getOffset());
+        assertEquals(7, BtScripts.parse("a := 12abc").getErrors().get(0).getOffset());
+        assertEquals("invalid suffix on number literal", BtScripts.parse("a := 5.").getErrors().get(0).getMessage());
+        ok("a := '1..2'; b := x1 == 1.5e3; c := 1 .. 2");
+    }
+
+    @Test
+    public void operatorGroupsDoNotMixWithoutParentheses() {
+        assertEquals(11, BtScripts.parse("a := 1 + 2 & 3").getErrors().get(0).getOffset());
+        assertTrue(BtScripts.parse("a := ~b + 1").hasErrors());
+        assertTrue(BtScripts.parse("a := !-1").hasErrors());
+        ok("a := (1 + 2) & 3; b := - - c; d := !!e; f := 1 | 2 ^ 3; g := !h & i; j := 'a' .. 'b' .. 1");
+    }
 }
