@@ -29,11 +29,21 @@ public class DemoTest {
 
     @Test
     public void batteryAndSafetyDrivesAdaptationsThatAreToldAndReported() throws Exception {
+        runAndCheck(Path.of("src/test/resources/executor/intralogistics.ext.xml"));
+    }
+
+    /** The same woven tree written for BehaviorTree.CPP 4 runs the same mission with v4 semantics. */
+    @Test
+    public void theVersion4TreeAdaptsTheSameWay() throws Exception {
+        runAndCheck(Path.of("src/test/resources/executor/intralogistics.v4.ext.xml"));
+    }
+
+    private void runAndCheck(Path tree) throws Exception {
         SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
         SkillTable.Entry hand = new SkillTable.Entry(100, "SUCCESS", NullNode.getInstance(), Json.object());
         StringWriter console = new StringWriter();
         Demo demo = new Demo(Path.of("src/test/resources/models/testbot.io.json"),
-                Path.of("src/test/resources/executor/intralogistics.ext.xml"),
+                tree,
                 Scenario.load(Path.of("src/test/resources/demo/short.scenario.json")),
                 new SkillTable(Map.of("navigate", move, "objectpick", hand, "objectdrop", hand)),
                 temp.getRoot().toPath(), Ports.endpoints(), new PrintWriter(console, true));
