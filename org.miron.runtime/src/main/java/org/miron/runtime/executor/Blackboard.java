@@ -27,6 +27,8 @@ public final class Blackboard {
     private final Blackboard parent;
     private final Map<String, String> remapping = new ConcurrentHashMap<>();
     private final Map<String, Object> storage = new ConcurrentHashMap<>();
+    /** How many times each entry stored here was written (BT.CPP 4's sequence_id). */
+    private final Map<String, Long> writes = new ConcurrentHashMap<>();
     private volatile boolean autoRemap;
 
     private Blackboard(Blackboard parent) {
@@ -94,14 +96,30 @@ public final class Blackboard {
     /** Creates the entry without a value if it does not exist (BT.CPP 4 does it for every {key} port). */
     public void declare(String key) {
         Blackboard owner = owner(key);
-        owner.storage.putIfAbsent(local(key), NO_VALUE);
+        String local = local(key);
+        if (owner.storage.putIfAbsent(local, NO_VALUE) == null) {
+            owner.writes.put(local, 0L);
+        }
+    }
+
+    /**
+     * How many times the entry was written, -1 when it does not exist: a node can tell whether it
+     * changed since it last looked (WasEntryUpdated, SkipUnlessUpdated, WaitValueUpdate).
+     */
+    public long writeCount(String key) {
+        if (!contains(key)) {
+            return -1;
+        }
+        return owner(key).writes.getOrDefault(local(key), 0L);
     }
 
     private void store(String key, Object value) {
         if (value == null) {
             storage.remove(key);
+            writes.remove(key);
         } else {
             storage.put(key, value);
+            writes.merge(key, 1L, Long::sum);
         }
     }
 

@@ -26,7 +26,8 @@ final class V4Nodes {
                     "ReactiveSequence", "ReactiveFallback", "Parallel", "ParallelAll",
                     "Repeat", "RetryUntilSuccessful", "RunOnce", "Precondition",
                     "Script", "ScriptCondition", "Sleep", "UnsetBlackboard",
-                    "LoopInt", "LoopDouble", "LoopString", "LoopBool":
+                    "LoopInt", "LoopDouble", "LoopString", "LoopBool",
+                    "WasEntryUpdated", "SkipUnlessUpdated", "WaitValueUpdate":
                 return true;
             default:
                 return false;
@@ -36,7 +37,8 @@ final class V4Nodes {
     /** True for the tags that take exactly one child. */
     static boolean isDecorator(String tag) {
         switch (tag) {
-            case "Repeat", "RetryUntilSuccessful", "RunOnce", "Precondition", "LoopInt", "LoopDouble", "LoopString", "LoopBool":
+            case "Repeat", "RetryUntilSuccessful", "RunOnce", "Precondition", "LoopInt", "LoopDouble", "LoopString", "LoopBool",
+                    "SkipUnlessUpdated", "WaitValueUpdate":
                 return true;
             default:
                 return false;
@@ -46,7 +48,7 @@ final class V4Nodes {
     /** True for the leaves (no children). */
     static boolean isLeaf(String tag) {
         switch (tag) {
-            case "Script", "ScriptCondition", "Sleep", "UnsetBlackboard":
+            case "Script", "ScriptCondition", "Sleep", "UnsetBlackboard", "WasEntryUpdated":
                 return true;
             default:
                 return false;
@@ -106,6 +108,12 @@ final class V4Nodes {
                 return new SleepNode(info);
             case "UnsetBlackboard":
                 return new UnsetBlackboardNode(info);
+            case "WasEntryUpdated":
+                return new EntryUpdatedNode(info);
+            case "SkipUnlessUpdated":
+                return new EntryUpdatedDecorator(info, child, NodeStatus.SKIPPED);
+            case "WaitValueUpdate":
+                return new EntryUpdatedDecorator(info, child, NodeStatus.RUNNING);
             default:
                 Function<String, Object> element = QueueLoopNode.elementType(tag);
                 if (element != null) {
