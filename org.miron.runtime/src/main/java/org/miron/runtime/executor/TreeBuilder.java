@@ -286,7 +286,7 @@ public final class TreeBuilder {
             } catch (RuntimeException e) {
                 throw new BtBuildException(info.path() + ": unknown switch " + tag);
             }
-            return new SwitchNode(info, cases, children);
+            return new SwitchNode(info, cases, children, v4 == null ? null : registry.scriptingEnums());
         }
         throw new BtBuildException(info.path() + ": unsupported control node " + tag);
     }
