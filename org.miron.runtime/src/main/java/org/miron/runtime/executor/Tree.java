@@ -15,10 +15,17 @@ public final class Tree {
     private final Node root;
     private final Blackboard blackboard;
     private final TreeContext context;
+    private final int formatVersion;
     private final List<BlackboardFeed> feeds = new CopyOnWriteArrayList<>();
     private volatile boolean stopRequested;
 
     public Tree(String id, Node root, Blackboard blackboard, TreeContext context) {
+        this(id, root, blackboard, context, 3);
+    }
+
+    /** @param formatVersion the BehaviorTree.CPP version whose semantics the nodes follow (3 or 4) */
+    public Tree(String id, Node root, Blackboard blackboard, TreeContext context, int formatVersion) {
+        this.formatVersion = formatVersion;
         this.id = id;
         this.root = root;
         this.blackboard = blackboard;
@@ -107,6 +114,11 @@ public final class Tree {
 
     public String id() {
         return id;
+    }
+
+    /** The BehaviorTree.CPP version the tree runs as: its file's BTCPP_format (3 when absent). */
+    public int formatVersion() {
+        return formatVersion;
     }
 
     public Node root() {

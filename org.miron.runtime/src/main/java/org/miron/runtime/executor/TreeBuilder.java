@@ -106,7 +106,7 @@ public final class TreeBuilder {
         v4 = BtFormat.of(tree) == 4 ? new V4Nodes(registry.scriptingEnums()) : null;
         try {
             Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
-            return new Tree(tree.getName(), root, blackboard, context);
+            return new Tree(tree.getName(), root, blackboard, context, v4 != null ? 4 : 3);
         } finally {
             v4 = null;
         }

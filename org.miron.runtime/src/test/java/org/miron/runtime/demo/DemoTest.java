@@ -29,16 +29,16 @@ public class DemoTest {
 
     @Test
     public void batteryAndSafetyDrivesAdaptationsThatAreToldAndReported() throws Exception {
-        runAndCheck(Path.of("src/test/resources/executor/intralogistics.ext.xml"));
+        runAndCheck(Path.of("src/test/resources/executor/intralogistics.ext.xml"), 3);
     }
 
     /** The same woven tree written for BehaviorTree.CPP 4 runs the same mission with v4 semantics. */
     @Test
     public void theVersion4TreeAdaptsTheSameWay() throws Exception {
-        runAndCheck(Path.of("src/test/resources/executor/intralogistics.v4.ext.xml"));
+        runAndCheck(Path.of("src/test/resources/executor/intralogistics.v4.ext.xml"), 4);
     }
 
-    private void runAndCheck(Path tree) throws Exception {
+    private void runAndCheck(Path tree, int version) throws Exception {
         SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
         SkillTable.Entry hand = new SkillTable.Entry(100, "SUCCESS", NullNode.getInstance(), Json.object());
         StringWriter console = new StringWriter();
@@ -51,6 +51,7 @@ public class DemoTest {
         Demo.Result result = demo.run();
 
         String told = console.toString();
+        assertTrue(told, told.contains(tree.getFileName() + " runs as BehaviorTree.CPP " + version + "."));
         assertTrue(told, told.contains("RoQME   power_autonomy = 0.2"));
         assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch)"));
         assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge"));
