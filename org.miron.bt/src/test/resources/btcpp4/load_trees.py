@@ -3,7 +3,7 @@
 Usage: python load_trees.py FILE...   Prints one line per file, tab-separated:
 "loaded" or "rejected", the file, and the library's error message on one line.
 
-Node IDs that are not built-ins (of version 4, or of version 3 and dropped since) are the user's custom nodes: each is registered as a dummy
+Node IDs that are neither built-ins (of version 4, or of version 3 and dropped since) nor trees of the file are the user's custom nodes: each is registered as a dummy
 (action, condition or decorator by its form and child count; a custom control with several
 children is loaded as a Sequence, as the bindings cannot register control nodes). The bindings
 cannot declare ports either, so a custom node's ports are dropped before loading; built-in nodes,
@@ -41,13 +41,14 @@ def children(element):
 def prepare(root, factory):
     """Registers the custom nodes of a parsed file and drops their ports; returns the XML text."""
     registered = set()
+    trees = {tree.get("ID") for tree in root.iter("BehaviorTree")}
     for tree in root.iter("BehaviorTree"):
         for node in tree.iter():
             if node is tree or not isinstance(node.tag, str):
                 continue
             explicit = node.tag in EXPLICIT
             node_id = node.get("ID") if explicit else node.tag
-            if node_id is None or node_id in BUILTINS or node_id in REMOVED:
+            if node_id is None or node_id in BUILTINS or node_id in REMOVED or node_id in trees:
                 continue
             kids = len(children(node))
             if kids > 1:

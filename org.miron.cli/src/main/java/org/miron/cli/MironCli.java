@@ -7,10 +7,10 @@ import picocli.CommandLine.Command;
 @Command(name = "miron", mixinStandardHelpOptions = true, versionProvider = BuildVersion.class,
         scope = CommandLine.ScopeType.INHERIT,
         description = "MIRoN toolchain: behaviour trees, RoQME and MIRoN models for self-adaptive robots: check, "
-                + "format and generate models; serve them to editors (lsp); run the broker, engine, skill-interface "
+                + "format, convert (BehaviorTree.CPP 3 and 4) and generate models; serve them to editors (lsp); run the broker, engine, skill-interface "
                 + "mock, scenario player and BT executor; or all of them at once with demo.",
-        subcommands = { CheckCommand.class, FormatCommand.class, GenerateCommand.class, DemoCommand.class,
-                BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class,
+        subcommands = { CheckCommand.class, FormatCommand.class, ConvertCommand.class, GenerateCommand.class,
+                DemoCommand.class, BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class,
                 ExecuteCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
 public class MironCli implements Runnable {
 

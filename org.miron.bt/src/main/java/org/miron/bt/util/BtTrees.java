@@ -121,4 +121,16 @@ public final class BtTrees {
         boolean explicit = "Control".equals(node.getTag()) || "Decorator".equals(node.getTag());
         return explicit ? node.attribute("ID") : node.getTag();
     }
+
+    /** {@code <Tree/>}: a compact element whose tag is a tree visible from the file (BT.CPP 3 only). */
+    public static boolean isCompactSubtree(TreeNode node) {
+        return node instanceof org.miron.bt.bt.Action && node.getTag() != null && !"Action".equals(node.getTag())
+                && node.eResource() != null && visibleTrees(node.eResource()).containsKey(node.getTag());
+    }
+
+    /** {@code <Action ID="x">}, {@code <Condition ID="x">}, {@code <Control ID="x">}, {@code <Decorator ID="x">}. */
+    public static boolean isExplicitForm(TreeNode node) {
+        String tag = node.getTag();
+        return "Action".equals(tag) || "Condition".equals(tag) || "Control".equals(tag) || "Decorator".equals(tag);
+    }
 }

@@ -112,6 +112,12 @@ public final class BtIssueCodes {
     public static final String V3_ONLY_ATTRIBUTE = "bt.v3-only-attribute";
     /** A version-4 attribute in a version-3 file (_skipIf.._post, _autoremap, success_count...). Data: the replacement, if any. */
     public static final String V4_ONLY_ATTRIBUTE = "bt.v4-only-attribute";
+    /**
+     * {@code <Action ID="X">} (or Condition, Control, Decorator) directly under a ReactiveSequence
+     * in a version-4 file: BehaviorTree.CPP 4 looks its children up by element name and rejects
+     * it. Data: the compact tag, {@code X}.
+     */
+    public static final String REACTIVE_EXPLICIT_CHILD = "bt.reactive-explicit-child";
     /** A boolean port whose value is not true/false/1/0 (as BT.CPP converts it). */
     public static final String NOT_A_BOOLEAN = "bt.not-a-boolean";
     /** A Loop queue whose literal elements do not convert to the loop's type. */
@@ -125,4 +131,11 @@ public final class BtIssueCodes {
     public static final String SCRIPT_ASSIGNMENT_TARGET = "bt.script-assignment-target";
     /** A string literal used with an arithmetic or bitwise operator (fails on every tick). */
     public static final String SCRIPT_TYPE_MISMATCH = "bt.script-type-mismatch";
+
+    // ------------------------------------------------------------------ conversion (miron convert)
+
+    /** An element of a version-4 file that BehaviorTree.CPP 3 cannot express (Script, Sleep, _skipIf...). */
+    public static final String NO_V3_EQUIVALENT = "bt.no-v3-equivalent";
+    /** An element of a version-3 file that BehaviorTree.CPP 4 cannot express (FallbackStar, a port named _skipIf...). */
+    public static final String NO_V4_EQUIVALENT = "bt.no-v4-equivalent";
 }

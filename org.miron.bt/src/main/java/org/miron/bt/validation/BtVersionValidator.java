@@ -14,6 +14,7 @@ import org.miron.bt.bt.SubtreeNode;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtFormats;
+import org.miron.bt.util.BtTrees;
 
 /**
  * A file's version comes from BTCPP_format on its root (absent: 3). Elements and attributes of
@@ -51,7 +52,10 @@ public class BtVersionValidator extends AbstractDeclarativeValidator {
             return;
         }
         int version = BtFormats.versionOf(node);
-        if (version == 4 && BtVersions.V3_ONLY_TAGS.containsKey(tag)) {
+        if (version == 4 && BtTrees.isCompactSubtree(node)) {
+            error("<" + tag + "/> names a tree, which only BehaviorTree.CPP 3 accepts: write <SubTree ID=\"" + tag
+                    + "\"/>", node, BT.getTreeNode_Tag(), V3_ONLY_ELEMENT, "SubTree");
+        } else if (version == 4 && BtVersions.V3_ONLY_TAGS.containsKey(tag)) {
             String replacement = BtVersions.V3_ONLY_TAGS.get(tag);
             error(tag + " is not a BehaviorTree.CPP 4 node: " + v4Advice(tag, replacement), node,
                     BT.getTreeNode_Tag(), V3_ONLY_ELEMENT, replacement);
@@ -61,6 +65,19 @@ public class BtVersionValidator extends AbstractDeclarativeValidator {
                     : "write " + replacement + " in version 3, or set BTCPP_format=\"4\" on <root>";
             error(tag + " is a BehaviorTree.CPP 4 node: " + advice, node, BT.getTreeNode_Tag(), V4_ONLY_ELEMENT,
                     replacement.isEmpty() ? new String[0] : new String[] { replacement });
+        }
+    }
+
+    /** BT.CPP 4 checks ReactiveSequence's children by element name, so explicit forms fail to load there. */
+    @Check
+    public void checkReactiveChild(TreeNode node) {
+        if (BtFormats.versionOf(node) == 4 && BtTrees.isExplicitForm(node) && node.attribute("ID") != null
+                && node.eContainer() instanceof TreeNode
+                && "ReactiveSequence".equals(((TreeNode) node.eContainer()).getTag())) {
+            String id = node.attribute("ID");
+            error("BehaviorTree.CPP 4 does not load <" + node.getTag() + " ID=\"" + id
+                    + "\"> directly under a ReactiveSequence: write <" + id + "/>", node, BT.getTreeNode_Tag(),
+                    REACTIVE_EXPLICIT_CHILD, id);
         }
     }
 

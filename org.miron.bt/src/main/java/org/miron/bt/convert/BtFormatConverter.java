@@ -1,0 +1,77 @@
+package org.miron.bt.convert;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.miron.bt.bt.Attribute;
+import org.miron.bt.bt.BTModel;
+import org.miron.bt.bt.TreeNode;
+import org.miron.bt.util.BtAttributes;
+import org.miron.bt.util.BtFormats;
+
+/**
+ * Converts a BT model between the XML formats of BehaviorTree.CPP 3 and 4, in place (write it
+ * with BtFormatting.print). Version 3 to 4 follows BehaviorTree.CPP's convert_v3_to_v4.py and
+ * adds what it leaves out (V3ToV4); version 4 to 3 converts what has an equivalent and otherwise
+ * changes nothing and reports every element that has none (V4ToV3).
+ *
+ * <p>A round trip 3 → 4 → 3 gives the same model, except where BehaviorTree.CPP 4 merged two
+ * version-3 spellings: RetryUntilSuccesful comes back as RetryUntilSuccessful,
+ * {@code <SubTree __shared_blackboard="true">} as {@code <SubTreePlus __autoremap="true">} (v4's
+ * _autoremap is SubTreePlus's remapping), and meaningless {@code __shared_blackboard="false"}
+ * attributes are dropped.
+ */
+public final class BtFormatConverter {
+    private BtFormatConverter() {
+    }
+
+    /** Converts to {@code targetVersion} (3 or 4); a file already in that version is left as it is. */
+    public static Conversion convert(BTModel model, int targetVersion) {
+        if (targetVersion != 3 && targetVersion != 4) {
+            throw new IllegalArgumentException("BehaviorTree.CPP format " + targetVersion + " (3 or 4)");
+        }
+        if (BtFormats.version(model) == targetVersion) {
+            return new Conversion(List.of());
+        }
+        List<TreeNode> nodes = new ArrayList<>();
+        for (EObject object : (Iterable<EObject>) () -> EcoreUtil.getAllContents(model, true)) {
+            if (object instanceof TreeNode) {
+                nodes.add((TreeNode) object);
+            }
+        }
+        List<ConversionProblem> problems = new ArrayList<>();
+        for (TreeNode node : nodes) {
+            if (targetVersion == 4) {
+                V3ToV4.check(node, problems);
+            } else {
+                V4ToV3.check(node, problems);
+            }
+        }
+        if (!problems.isEmpty()) {
+            return new Conversion(problems);
+        }
+        for (TreeNode node : nodes) {
+            if (targetVersion == 4) {
+                V3ToV4.apply(node);
+            } else {
+                V4ToV3.apply(node);
+            }
+        }
+        setFormat(model, targetVersion);
+        return new Conversion(List.of());
+    }
+
+    /** BTCPP_format="4" first on the root; version 3 files have none. */
+    private static void setFormat(BTModel model, int version) {
+        Attribute format = BtAttributes.find(model.getAttributes(), BtFormats.ATTRIBUTE);
+        if (version == 3) {
+            model.getAttributes().remove(format);
+        } else if (format == null) {
+            model.getAttributes().add(0, TreeEdits.attribute(BtFormats.ATTRIBUTE, "4"));
+        } else {
+            format.setValue("4");
+        }
+    }
+}
