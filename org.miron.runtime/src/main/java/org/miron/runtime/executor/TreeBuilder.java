@@ -50,6 +50,7 @@ import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.util.BtAttributes;
+import org.miron.bt.util.BtFormats;
 import org.miron.bt.util.BtTrees;
 
 /**
@@ -103,7 +104,7 @@ public final class TreeBuilder {
     /** The tree, with the semantics of its file's version (BTCPP_format, absent = 3). */
     public Tree build(BehaviorTree tree) {
         Blackboard blackboard = Blackboard.create();
-        v4 = BtFormat.of(tree) == 4 ? new V4Nodes(registry.scriptingEnums()) : null;
+        v4 = BtFormats.versionOf(tree) == 4 ? new V4Nodes(registry.scriptingEnums()) : null;
         try {
             Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
             return new Tree(tree.getName(), root, blackboard, context, v4 != null ? 4 : 3);

@@ -13,7 +13,12 @@ import java.util.Map;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.bt.bt.BTModel;
+import org.miron.bt.convert.BtFormatConverter;
+import org.miron.bt.convert.Conversion;
+import org.miron.bt.formatting2.BtFormatting;
 import org.miron.runtime.Json;
+import org.miron.runtime.executor.BtLoader;
 import org.miron.runtime.Ports;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.skill.SkillTable;
@@ -32,10 +37,17 @@ public class DemoTest {
         runAndCheck(Path.of("src/test/resources/executor/intralogistics.ext.xml"), 3);
     }
 
-    /** The same woven tree written for BehaviorTree.CPP 4 runs the same mission with v4 semantics. */
+    /** The woven tree converted to BehaviorTree.CPP 4 (as `miron convert --to 4`) adapts the same way. */
     @Test
-    public void theVersion4TreeAdaptsTheSameWay() throws Exception {
-        runAndCheck(Path.of("src/test/resources/executor/intralogistics.v4.ext.xml"), 4);
+    public void itsVersion4ConversionAdaptsTheSameWay() throws Exception {
+        BTModel model = new BtLoader().load(Path.of("src/test/resources/executor/intralogistics.ext.xml")).model();
+        Conversion conversion = BtFormatConverter.convert(model, 4);
+        assertTrue(conversion.getProblems().toString(), conversion.succeeded());
+        String v4 = BtFormatting.print(model);
+        assertTrue(v4, v4.contains("BTCPP_format=\"4\"") && v4.contains("<SubTree ") && !v4.contains("SubTreePlus"));
+        Path tree = temp.newFolder("v4").toPath().resolve("intralogistics.ext.xml");
+        Files.writeString(tree, v4);
+        runAndCheck(tree, 4);
     }
 
     private void runAndCheck(Path tree, int version) throws Exception {
