@@ -67,6 +67,15 @@ public class DemoCommandTest {
     }
 
     @Test
+    public void onlyBehaviorTreeCpp3And4AreFormats() {
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setErr(new PrintWriter(err, true));
+        assertEquals(2, cli.execute("demo", "--bt-format", "5", "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("--bt-format must be 3 or 4, not 5"));
+    }
+
+    @Test
     public void aMissingScenarioIsAUsageError() {
         StringWriter err = new StringWriter();
         CommandLine cli = MironCli.commandLine();

@@ -61,6 +61,18 @@ public class Version4TreeTest {
     }
 
     @Test
+    public void aTimeoutOfZeroNeverExpiresInVersion4() {
+        Tree tree = build("NoTimeout");
+        drive.returns(RUNNING);
+        assertEquals(RUNNING, tree.tickRoot());
+        clock.advance(10_000);
+        assertEquals(RUNNING, tree.tickRoot());
+        drive.returns(SUCCESS);
+        assertEquals(SUCCESS, tree.tickRoot());
+        assertEquals(0, drive.halts);
+    }
+
+    @Test
     public void sequenceWithMemoryKeepsItsPlaceWhenHaltedAsBtCpp48() {
         Tree tree = build("Memory");
         lift.returns(RUNNING);
