@@ -147,7 +147,11 @@ public final class TreeBuilder {
         if (v4 == null) {
             return buildNode(node, info, blackboard, stack);
         }
-        declarePorts(info);
+        boolean isSubtree = node instanceof SubtreeNode
+                || (node instanceof Action && !"Action".equals(node.getTag()) && trees(node).containsKey(node.getTag()));
+        if (!isSubtree) {
+            declarePorts(info); // a SubTree's attributes remap, they declare nothing (as BT.CPP 4)
+        }
         Node built;
         if (V4Nodes.isV4Builtin(node.getTag()) && !(node instanceof SubtreeNode)) {
             List<Node> children = new ArrayList<>();
