@@ -37,8 +37,14 @@ public final class ParallelNodeV4 extends ControlNode {
     protected NodeStatus tick() {
         int n = children.size();
         int writtenSuccess = ports().getInt(SUCCESS_COUNT).orElse(-1);
-        int required = resolve(SUCCESS_COUNT, writtenSuccess, n);
-        int failureCount = resolve(FAILURE_COUNT, ports().getInt(FAILURE_COUNT).orElse(1), n);
+        int required;
+        int failureCount;
+        try {
+            required = resolve(SUCCESS_COUNT, writtenSuccess, n);
+            failureCount = resolve(FAILURE_COUNT, ports().getInt(FAILURE_COUNT).orElse(1), n);
+        } catch (BtRuntimeException e) {
+            throw new BtRuntimeException(path() + ": " + e.getMessage(), e);
+        }
         setStatus(NodeStatus.RUNNING);
         int skipped = 0;
         for (int i = 0; i < n; i++) {
