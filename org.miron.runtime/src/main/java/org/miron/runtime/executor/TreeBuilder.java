@@ -150,7 +150,7 @@ public final class TreeBuilder {
         boolean isSubtree = node instanceof SubtreeNode
                 || (node instanceof Action && !"Action".equals(node.getTag()) && trees(node).containsKey(node.getTag()));
         if (!isSubtree) {
-            declarePorts(info); // a SubTree's attributes remap, they declare nothing (as BT.CPP 4)
+            V4Nodes.declarePorts(info); // a SubTree's attributes remap, they declare nothing (as BT.CPP 4)
         }
         Node built;
         if (V4Nodes.isV4Builtin(node.getTag()) && !(node instanceof SubtreeNode)) {
@@ -168,36 +168,9 @@ public final class TreeBuilder {
         return built;
     }
 
-    /** BT.CPP 4 creates, when building, an entry without a value for every port pointing at a key. */
-    private static void declarePorts(NodeInfo info) {
-        info.ports().attributes().forEach((port, value) -> {
-            if (!port.startsWith("_") && !port.equals("name") && !port.equals("ID")) {
-                Ports.blackboardKey(port, value).ifPresent(info.ports().blackboard()::declare);
-            }
-        });
-    }
-
-    /**
-     * Version-4 SubTree: always its own blackboard; {@code port="{parentKey}"} (or {@code {=}}, the
-     * key of the same name) remaps, a literal is written into the subtree's blackboard as text,
-     * {@code _autoremap="true"} makes every other key (not starting with '_') the parent's.
-     */
+    /** Version-4 SubTree: its blackboard prepared by {@link V4Nodes#subtreeBlackboard}. */
     private Node subtreeV4(BehaviorTree tree, NodeInfo info, Blackboard parent, Deque<String> stack) {
-        Blackboard blackboard = parent.createChild();
-        info.ports().attributes().forEach((port, value) -> {
-            if (port.equals("name") || port.equals("ID") || port.startsWith("_")) {
-                return;
-            }
-            var key = Ports.blackboardKey(port, value);
-            if (key.isPresent()) {
-                blackboard.remap(port, key.get());
-            } else {
-                blackboard.set(port, value);
-            }
-        });
-        if (booleanAttribute(info, "_autoremap")) {
-            blackboard.setAutoRemap(true);
-        }
+        Blackboard blackboard = V4Nodes.subtreeBlackboard(info, parent);
         return new SubTreeNode(info, tree.getName(), blackboard, buildTree(tree, blackboard, info.path(), stack));
     }
 

@@ -123,6 +123,44 @@ final class V4Nodes {
         }
     }
 
+    /** BT.CPP 4 creates, when building, an entry without a value for every port pointing at a key. */
+    static void declarePorts(NodeInfo info) {
+        info.ports().attributes().forEach((port, value) -> {
+            if (!port.startsWith("_") && !port.equals("name") && !port.equals("ID")) {
+                Ports.blackboardKey(port, value).ifPresent(info.ports().blackboard()::declare);
+            }
+        });
+    }
+
+    /**
+     * The blackboard of a version-4 SubTree: always its own; {@code port="{parentKey}"} (or
+     * {@code {=}}, the key of the same name) remaps, a literal is written into it as text,
+     * {@code _autoremap="true"} makes every other key (not starting with '_') the parent's.
+     */
+    static Blackboard subtreeBlackboard(NodeInfo info, Blackboard parent) {
+        Blackboard blackboard = parent.createChild();
+        info.ports().attributes().forEach((port, value) -> {
+            if (port.equals("name") || port.equals("ID") || port.startsWith("_")) {
+                return;
+            }
+            var key = Ports.blackboardKey(port, value);
+            if (key.isPresent()) {
+                blackboard.remap(port, key.get());
+            } else {
+                blackboard.set(port, value);
+            }
+        });
+        String autoremap = info.ports().raw("_autoremap");
+        if (autoremap != null) {
+            try {
+                blackboard.setAutoRemap(Conversions.toBoolean(autoremap));
+            } catch (IllegalArgumentException e) {
+                throw new BtBuildException(info.path() + ": _autoremap: " + e.getMessage(), e);
+            }
+        }
+        return blackboard;
+    }
+
     /** The child elements of a model node, whatever metamodel class the grammar gave it. */
     static List<TreeNode> children(TreeNode node) {
         if (node instanceof org.miron.bt.bt.ControlNode control) {
