@@ -12,7 +12,6 @@ import org.miron.bt.bt.BTModel;
 import org.miron.bt.convert.BtFormatConverter;
 import org.miron.bt.convert.Conversion;
 import org.miron.bt.convert.ConversionProblem;
-import org.miron.bt.formatting2.BtFormatting;
 import org.miron.generator.standalone.Diagnostic;
 import org.miron.generator.standalone.ModelLoader;
 
@@ -80,7 +79,7 @@ public class ConvertCommand implements Callable<Integer> {
             err.flush();
             return 1;
         }
-        String text = BtFormatting.print(model);
+        String text = BtFormatConverter.text(model);
         if (output == null) {
             PrintWriter out = spec.commandLine().getOut();
             out.print(text);

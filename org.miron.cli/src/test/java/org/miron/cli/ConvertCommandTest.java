@@ -32,7 +32,8 @@ public class ConvertCommandTest {
         Cli cli = new Cli();
         assertEquals(cli.err.toString(), 0, cli.run("convert", "--to", "4", example.getPath(), "-o", v4.getPath()));
         String text = Files.readString(v4.toPath());
-        assertTrue(text, text.startsWith("<root BTCPP_format=\"4\""));
+        assertTrue(text, text.startsWith("<?xml version=\"1.0\"?>\n<root BTCPP_format=\"4\""));
+        assertTrue(text, !text.contains("\n\n"));
         assertTrue(text, text.contains("success_count=\"1\""));
         ModelLoader loader = new ModelLoader();
         loader.load(v4);
@@ -67,7 +68,7 @@ public class ConvertCommandTest {
                 StandardCharsets.UTF_8);
         Cli cli = new Cli();
         assertEquals(1, cli.run("convert", "--to", "4", broken.getPath()));
-        assertTrue(cli.err.toString(), cli.err.toString().contains("broken.bt:2:27: error [bt.decorator-child-count]"));
+        assertTrue(cli.err.toString(), cli.err.toString().contains("broken.bt:2:28: error [bt.decorator-child-count]"));
         assertEquals(2, Cli.exit("convert", "--to", "5", broken.getPath()));
         assertEquals(2, Cli.exit("convert", broken.getPath()));
         assertEquals(2, Cli.exit("convert", "--to", "4", new File(tmp.getRoot(), "missing.bt").getPath()));

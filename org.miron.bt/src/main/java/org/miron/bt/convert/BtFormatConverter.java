@@ -4,7 +4,13 @@ import java.util.ArrayList;
 import java.util.List;
 
 import org.eclipse.emf.ecore.EObject;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
 import org.eclipse.emf.ecore.util.EcoreUtil;
+import org.eclipse.xtext.nodemodel.ICompositeNode;
+import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.miron.bt.formatting2.BtFormatting;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.TreeNode;
@@ -13,7 +19,7 @@ import org.miron.bt.util.BtFormats;
 
 /**
  * Converts a BT model between the XML formats of BehaviorTree.CPP 3 and 4, in place (write it
- * with BtFormatting.print). Version 3 to 4 follows BehaviorTree.CPP's convert_v3_to_v4.py and
+ * with {@link #text}). Version 3 to 4 follows BehaviorTree.CPP's convert_v3_to_v4.py and
  * adds what it leaves out (V3ToV4); version 4 to 3 converts what has an equivalent and otherwise
  * changes nothing and reports every element that has none (V4ToV3).
  *
@@ -24,6 +30,8 @@ import org.miron.bt.util.BtFormats;
  * attributes are dropped.
  */
 public final class BtFormatConverter {
+    private static final Pattern PROLOG = Pattern.compile("\\s*(<\\?xml[^>]*\\?>)");
+
     private BtFormatConverter() {
     }
 
@@ -61,6 +69,19 @@ public final class BtFormatConverter {
         }
         setFormat(model, targetVersion);
         return new Conversion(List.of());
+    }
+
+    /**
+     * The converted model as a file: the source's XML declaration, then the model printed by the
+     * BT formatter. Comments of the source are not kept (the serializer writes the model).
+     */
+    public static String text(BTModel model) {
+        String printed = BtFormatting.print(model).replaceAll("^\\s+", "");
+        // Where comments were, the serializer leaves empty lines: drop lines holding only spaces.
+        printed = printed.replaceAll("\n[ \t]*(?=\n)", "");
+        ICompositeNode node = NodeModelUtils.getNode(model);
+        Matcher prolog = PROLOG.matcher(node == null ? "" : node.getRootNode().getText());
+        return prolog.lookingAt() ? prolog.group(1) + "\n" + printed : printed;
     }
 
     /** BTCPP_format="4" first on the root; version 3 files have none. */
