@@ -56,7 +56,7 @@ public abstract class Node {
         return conditions != null;
     }
 
-    /** The node's behaviour for one tick: RUNNING, SUCCESS or FAILURE. */
+    /** The node's behaviour for one tick: RUNNING, SUCCESS or FAILURE (or, in version 4, SKIPPED). */
     protected abstract NodeStatus tick();
 
     /**
