@@ -9,6 +9,7 @@ children is loaded as a Sequence, as the bindings cannot register control nodes)
 cannot declare ports either, so a custom node's ports are dropped before loading; built-in nodes,
 scripts, pre/post-conditions and subtrees are loaded exactly as written.
 """
+import os
 import sys
 import xml.etree.ElementTree as ET
 
@@ -70,9 +71,25 @@ def prepare(root, factory):
     return ET.tostring(root, encoding="unicode")
 
 
+def inline_includes(root, folder, seen):
+    """Replaces each <include path> by the trees of that file (relative to folder), recursively."""
+    for include in root.findall("include"):
+        root.remove(include)
+        path = os.path.normpath(os.path.join(folder, include.get("path", "")))
+        if path in seen:
+            continue
+        seen.add(path)
+        included = ET.parse(path).getroot()
+        inline_includes(included, os.path.dirname(path), seen)
+        for tree in included.findall("BehaviorTree"):
+            root.append(tree)
+
+
 def load(path):
     try:
         root = ET.parse(path).getroot()
+        # Included files' custom nodes must be registered too: load one document.
+        inline_includes(root, os.path.dirname(os.path.abspath(path)), {os.path.abspath(path)})
         factory = bt.BehaviorTreeFactory()
         text = prepare(root, factory)
         factory.create_tree_from_text(text)

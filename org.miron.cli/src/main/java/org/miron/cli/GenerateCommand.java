@@ -20,7 +20,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * `miron generate FILE.miron... [-o DIR] [--weights need|metric]`: validates the models and
+ * `miron generate FILE.miron... [-o DIR] [--weights need|metric] [--bt-format 3|4]`: validates the models and
  * everything they import, then writes name.ext.xml, name.mzn, name.dzn and name.io.json per model
  * with {@link MironGenerator} through a file-system access on DIR. Any error (validation or
  * generation, of any model) is printed and nothing at all is written.
@@ -44,6 +44,11 @@ public class GenerateCommand implements Callable<Integer> {
                     + "matters most) or metric (weight = metric, as the original MIRoN tools).")
     String weights;
 
+    @Option(names = "--bt-format", paramLabel = "3|4",
+            description = "BehaviorTree.CPP format of the woven tree: 3 or 4 (default: the format of the tree the "
+                    + "model imports).")
+    Integer btFormat;
+
     @Spec
     CommandSpec spec;
 
@@ -53,6 +58,9 @@ public class GenerateCommand implements Callable<Integer> {
         if (policy == null) {
             throw new ParameterException(spec.commandLine(),
                     "--weights must be need or metric, not '" + weights + "'");
+        }
+        if (btFormat != null && btFormat != 3 && btFormat != 4) {
+            throw new ParameterException(spec.commandLine(), "--bt-format must be 3 or 4, not " + btFormat);
         }
         Integer usage = Files.checkReadable(files, spec);
         if (usage != null) {
@@ -70,7 +78,7 @@ public class GenerateCommand implements Callable<Integer> {
         List<Resource> resources = new ArrayList<>();
         files.forEach(f -> resources.add(loader.load(f)));
         Path dir = output.toPath();
-        BatchGeneration.Outcome outcome = new BatchGeneration(loader, policy).run(resources, BatchGeneration.folder(dir));
+        BatchGeneration.Outcome outcome = new BatchGeneration(loader, policy, btFormat).run(resources, BatchGeneration.folder(dir));
         PrintWriter out = spec.commandLine().getOut();
         outcome.validation().forEach(out::println);
         outcome.generationErrors().forEach(out::println);

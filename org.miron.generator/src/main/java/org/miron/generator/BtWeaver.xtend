@@ -22,6 +22,8 @@ import org.miron.bt.bt.Switch
 import org.miron.bt.bt.TreeNode
 import org.miron.bt.scoping.BtGlobalScopeProvider
 import org.miron.bt.util.BtTrees
+import org.miron.bt.util.BtFormats
+import org.miron.bt.convert.BtFormatConverter
 import org.miron.dsl.miron.BehaviorTreeLiteral
 import org.miron.dsl.miron.BtBinding
 import org.miron.dsl.miron.InsertionType
@@ -45,6 +47,10 @@ import org.miron.dsl.util.Imports
  *    VariantAction per enum varpoint.
  * Trees of other files stay there and are reached through includes relative to the woven tree
  * (computed on URIs); only the files holding targets are copied into the woven tree.
+ * The woven tree is written for BehaviorTree.CPP 3 or 4 (by default the version of the imported
+ * tree): copied trees of the other version are converted (BtFormatConverter), and what the weaver
+ * adds uses the version's idioms (v3: SubTreePlus, success_threshold; v4: SubTree with {key}
+ * remapping and _autoremap, success_count).
  */
 class BtWeaver {
 	/** BehaviorTree.CPP 3 registers Switch2..Switch6 only. */
@@ -56,10 +62,19 @@ class BtWeaver {
 	val factory = BtFactory.eINSTANCE
 	/** Originals to their copies in the woven tree: variant calls point at the copies when there are. */
 	var EcoreUtil.Copier copier
+	/** The requested BehaviorTree.CPP format, or null for the imported tree's. */
+	val Integer requestedFormat
+	/** The format being written, 3 or 4. */
+	var int format
 
 	new(List<GenerationError> errors, URI wovenTree) {
+		this(errors, wovenTree, null)
+	}
+
+	new(List<GenerationError> errors, URI wovenTree, Integer format) {
 		this.errors = errors
 		this.wovenTree = wovenTree
+		this.requestedFormat = format
 	}
 
 	/** The woven tree, or null when the model imports no behaviour tree. */
@@ -83,6 +98,13 @@ class BtWeaver {
 		copier = new EcoreUtil.Copier
 		val copies = woven.map[copier.copy(contents.head) as BTModel].toList
 		copier.copyReferences
+		format = requestedFormat ?: BtFormats.version(primary.contents.head as BTModel)
+		for (copy : copies) {
+			convert(copy)
+		}
+		if (!errors.empty) {
+			return null
+		}
 
 		// Blackboard keys the runtime writes into the main tree (vp_sel, vp), by the tree reading them.
 		val readers = new LinkedHashMap<BehaviorTree, Set<String>>
@@ -117,14 +139,41 @@ class BtWeaver {
 		out
 	}
 
+	// ------------------------------------------------------------------ BehaviorTree.CPP version
+
+	/** A copied file of the other version, converted; what has no equivalent is reported at the original. */
+	def private convert(BTModel copy) {
+		if (BtFormats.version(copy) == format) {
+			return
+		}
+		val originals = <EObject, EObject>newHashMap
+		copier.forEach[original, copied|originals.put(copied, original)]
+		val conversion = BtFormatConverter.convert(copy, format)
+		for (problem : conversion.problems) {
+			val original = originals.get(problem.element) ?: originals.get(copy)
+			errors += new GenerationError(original, '''cannot weave a BehaviorTree.CPP «format» tree: «problem.message»''')
+		}
+		// _autoremap="false" only marks a converted SubTreePlus for the way back; a woven tree is not converted back.
+		for (call : copy.eAllContents.filter(SubtreeNode).toList) {
+			val marker = call.attributes.findFirst[name == "_autoremap" && value == "false"]
+			if (marker !== null) {
+				call.attributes -= marker
+			}
+		}
+	}
+
+	def private isV4() {
+		format == 4
+	}
+
 	// ------------------------------------------------------------------ blackboard visibility
 
 	/**
 	 * A subtree called with its own blackboard (BehaviorTree.CPP's default) does not see the main
 	 * tree's keys, where the runtime writes {vp_sel} and {vp}. Each key a subtree reads is remapped
-	 * on every call between the main tree and that subtree: k="{k}" on a SubTreePlus, k="k" on a
-	 * SubTree (BehaviorTree.CPP 3's remapping forms); calls that share the blackboard or remap
-	 * automatically pass it through as they are.
+	 * on every call between the main tree and that subtree: k="{k}" on a SubTreePlus and a version-4
+	 * SubTree, k="k" on a version-3 SubTree; calls that share the blackboard or remap automatically
+	 * pass it through as they are.
 	 */
 	def private exposeKeys(List<BTModel> copies, Map<BehaviorTree, Set<String>> readers) {
 		val primary = copies.head
@@ -140,7 +189,7 @@ class BtWeaver {
 			if (tree.name != main && done.add(tree.name + "/" + key)) {
 				for (call : trees.map[eAllContents.filter(SubtreeNode).toList].flatten.filter[behaviorTree?.name == tree.name].toList) {
 					if (!passesThrough(call) && call.attribute(key) === null) {
-						call.attributes += attribute(key, if (call instanceof SubtreePlus) "{" + key + "}" else key)
+						call.attributes += attribute(key, if (call instanceof SubtreePlus || isV4) "{" + key + "}" else key)
 					}
 					pending += EcoreUtil2.getContainerOfType(call, BehaviorTree) -> key
 				}
@@ -148,7 +197,10 @@ class BtWeaver {
 		}
 	}
 
-	def private static passesThrough(SubtreeNode call) {
+	def private passesThrough(SubtreeNode call) {
+		if (isV4) {
+			return #["true", "True", "TRUE", "1"].contains(call.attribute("_autoremap"))
+		}
 		"true".equalsIgnoreCase(call.attribute("__shared_blackboard"))
 			|| (call instanceof SubtreePlus && "true".equalsIgnoreCase(call.attribute("__autoremap")))
 	}
@@ -258,16 +310,16 @@ class BtWeaver {
 			val all = factory.createParallel
 			all.tag = "Parallel"
 			all.attributes += attribute("name", "monitoring_variants")
-			all.attributes += attribute("success_threshold", String.valueOf(actions.size))
-			all.attributes += attribute("failure_threshold", "1")
+			all.attributes += attribute(if (isV4) "success_count" else "success_threshold", String.valueOf(actions.size))
+			all.attributes += attribute(if (isV4) "failure_count" else "failure_threshold", "1")
 			all.nodes += actions
 			repeat.node = all
 		}
 		val parallel = factory.createParallel
 		parallel.tag = "Parallel"
 		parallel.attributes += attribute("name", "monitoring_parallel")
-		parallel.attributes += attribute("success_threshold", "1")
-		parallel.attributes += attribute("failure_threshold", "1")
+		parallel.attributes += attribute(if (isV4) "success_count" else "success_threshold", "1")
+		parallel.attributes += attribute(if (isV4) "failure_count" else "failure_threshold", "1")
 		val root = main.nodes.head
 		EcoreUtil.replace(root, parallel)
 		parallel.nodes += repeat
@@ -307,12 +359,14 @@ class BtWeaver {
 		for (uri : uris) {
 			reachable += uri
 			val r = resourceSet.getResource(uri, true)
+			checkIncludedVersion(r)
 			BtTrees.includedResources(r).forEach[reachable += URI]
 		}
 		for (vp : bound.filter[isEnum]) {
 			for (literal : vp.literals.filter(BehaviorTreeLiteral).filter[reference !== null && !reference.eIsProxy]) {
 				val r = literal.reference.eResource
 				if (!reachable.contains(r.URI)) {
+					checkIncludedVersion(r)
 					uris += r.URI
 					reachable += r.URI
 					BtTrees.includedResources(r).forEach[reachable += URI]
@@ -320,6 +374,17 @@ class BtWeaver {
 			}
 		}
 		uris.map[OutputLocation.relative(it, wovenTree)].toList
+	}
+
+	/** An included file is loaded as it is: it must already be in the woven tree's format. */
+	def private checkIncludedVersion(Resource included) {
+		val model = included.contents.head
+		if (model instanceof BTModel) {
+			val version = BtFormats.version(model)
+			if (version != format) {
+				errors += new GenerationError(model, '''the woven tree (BehaviorTree.CPP «format») includes «included.URI.lastSegment», a BehaviorTree.CPP «version» file: convert it with `miron convert --to «format»` or weave with --bt-format «version»''')
+			}
+		}
 	}
 
 	// ------------------------------------------------------------------ node factory
@@ -336,9 +401,10 @@ class BtWeaver {
 		node
 	}
 
-	def private subtree(BehaviorTree tree) {
-		val node = factory.createSubtreePlus
-		node.tag = "SubTreePlus"
+	/** A subtree call with its own blackboard: v3 SubTreePlus (which remaps with {key}), v4 SubTree. */
+	def private SubtreeNode subtree(BehaviorTree tree) {
+		val SubtreeNode node = if (isV4) factory.createSubtree else factory.createSubtreePlus
+		node.tag = if (isV4) "SubTree" else "SubTreePlus"
 		node.behaviorTree = copier.get(tree) as BehaviorTree ?: tree
 		node
 	}

@@ -16,6 +16,8 @@ import org.miron.dsl.miron.MironModel
 class MironGenerator extends AbstractGenerator {
 	/** Objective weights (the CLI's --weights). */
 	@Accessors WeightPolicy weights = WeightPolicy.NEED
+	/** BehaviorTree.CPP format of the woven tree, 3 or 4 (the CLI's --bt-format); null: the imported tree's. */
+	@Accessors Integer btFormat
 
 	/** Generates input into fsa; a model that cannot be generated throws and writes nothing. */
 	override doGenerate(Resource input, IFileSystemAccess2 fsa, IGeneratorContext context) {
@@ -50,7 +52,7 @@ class MironGenerator extends AbstractGenerator {
 
 		val treeFile = name + ".ext.xml"
 		val treeLocation = OutputLocation.of(target, treeFile, input)
-		val tree = new BtWeaver(errors, treeLocation).weave(m)
+		val tree = new BtWeaver(errors, treeLocation, btFormat).weave(m)
 		if (!errors.empty) {
 			// All errors are known by now (the printers report none): nothing will be written, and a
 			// broken tree may not even serialize.

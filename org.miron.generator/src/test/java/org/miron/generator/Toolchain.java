@@ -30,9 +30,14 @@ final class Toolchain {
 
     /** Generates a model into a folder with the given objective weights. */
     int generate(String model, String outDir, WeightPolicy weights) {
+        return generate(model, outDir, weights, null);
+    }
+
+    /** Generates a model with its woven tree in a BehaviorTree.CPP format (null: the imported tree's). */
+    int generate(String model, String outDir, WeightPolicy weights, Integer btFormat) {
         ModelLoader loader = new ModelLoader();
         List<Resource> resources = new ArrayList<>(List.of(loader.load(new File(model))));
-        BatchGeneration.Outcome outcome = new BatchGeneration(loader, weights)
+        BatchGeneration.Outcome outcome = new BatchGeneration(loader, weights, btFormat)
                 .run(resources, BatchGeneration.folder(Path.of(outDir)));
         outcome.validation().forEach(this::add);
         outcome.generationErrors().forEach(this::add);

@@ -7,12 +7,14 @@ import org.eclipse.xtext.util.LineAndColumn;
 
 /** An element of the file that the other version cannot express, with its position (1-based; 0 when unknown). */
 public final class ConversionProblem {
+    private final EObject element;
     private final String message;
     private final String code;
     private final int line;
     private final int column;
 
     ConversionProblem(EObject element, String message, String code) {
+        this.element = element;
         this.message = message;
         this.code = code;
         ICompositeNode node = NodeModelUtils.getNode(element);
@@ -25,6 +27,11 @@ public final class ConversionProblem {
             line = position.getLine();
             column = position.getColumn();
         }
+    }
+
+    /** The node or attribute without equivalent. */
+    public EObject getElement() {
+        return element;
     }
 
     public String getMessage() {

@@ -78,7 +78,7 @@ final class V3ToV4 {
             become(node, BtPackage.Literals.ACTION, id);
         } else if (BtTrees.isCompactSubtree(node)) {
             // <Tree/> for <SubTree ID="Tree"/>: version 4 only knows the explicit form.
-            BehaviorTree tree = BtTrees.visibleTrees(node.eResource()).get(tag);
+            BehaviorTree tree = BtTrees.visibleTreesOf(node).get(tag);
             TreeNode subtree = become(node, BtPackage.Literals.SUBTREE, "SubTree");
             ((Subtree) subtree).setBehaviorTree(tree);
             subtree(subtree);

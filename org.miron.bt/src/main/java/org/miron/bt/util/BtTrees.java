@@ -125,7 +125,20 @@ public final class BtTrees {
     /** {@code <Tree/>}: a compact element whose tag is a tree visible from the file (BT.CPP 3 only). */
     public static boolean isCompactSubtree(TreeNode node) {
         return node instanceof org.miron.bt.bt.Action && node.getTag() != null && !"Action".equals(node.getTag())
-                && node.eResource() != null && visibleTrees(node.eResource()).containsKey(node.getTag());
+                && visibleTreesOf(node).containsKey(node.getTag());
+    }
+
+    /** Trees visible from an element: of its file and includes, or of its model when it is in no file. */
+    public static Map<String, BehaviorTree> visibleTreesOf(org.eclipse.emf.ecore.EObject element) {
+        if (element.eResource() != null) {
+            return visibleTrees(element.eResource());
+        }
+        Map<String, BehaviorTree> trees = new LinkedHashMap<>();
+        BTModel model = EcoreUtil2.getContainerOfType(element, BTModel.class);
+        if (model != null) {
+            model.getTrees().forEach(tree -> trees.putIfAbsent(tree.getName(), tree));
+        }
+        return trees;
     }
 
     /** {@code <Action ID="x">}, {@code <Condition ID="x">}, {@code <Control ID="x">}, {@code <Decorator ID="x">}. */

@@ -57,8 +57,20 @@ public final class BatchGeneration {
     private final MironGenerator generator = new MironGenerator();
 
     public BatchGeneration(ModelLoader loader, WeightPolicy weights) {
+        this(loader, weights, null);
+    }
+
+    /**
+     * btFormat: the BehaviorTree.CPP format of the woven trees, 3 or 4; null writes each in the
+     * format of the tree its model imports.
+     */
+    public BatchGeneration(ModelLoader loader, WeightPolicy weights, Integer btFormat) {
+        if (btFormat != null && btFormat != 3 && btFormat != 4) {
+            throw new IllegalArgumentException("BehaviorTree.CPP format " + btFormat + " (3 or 4)");
+        }
         this.loader = loader;
         generator.setWeights(weights);
+        generator.setBtFormat(btFormat);
     }
 
     /** Generates the MIRoN models among resources (loaded by this run's loader) into target. */
