@@ -115,6 +115,9 @@ public class BtVersionValidator extends AbstractDeclarativeValidator {
                 } else if (node instanceof SubtreeNode && name.equals("_autoremap")) {
                     error("_autoremap is BehaviorTree.CPP 4: in version 3 write <SubTreePlus __autoremap=\"true\">",
                             attribute, BT.getAttribute_Name(), V4_ONLY_ATTRIBUTE, "__autoremap");
+                } else if (attribute.getValue().equals("{=}")) {
+                    error(name + "=\"{=}\" is BehaviorTree.CPP 4 shorthand: write " + name + "=\"{" + name + "}\"",
+                            attribute, BT.getAttribute_Value(), V4_ONLY_ATTRIBUTE, "{" + name + "}");
                 } else if (isParallel(node) && BtVersions.PARALLEL_PORTS.containsValue(name)) {
                     String v3 = name.replace("_count", "_threshold");
                     error(name + " is the BehaviorTree.CPP 4 name of this port: write " + v3 + " in version 3",
