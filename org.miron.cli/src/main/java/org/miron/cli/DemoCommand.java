@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -50,6 +52,10 @@ public class DemoCommand implements Callable<Integer> {
             description = "scenario time scale: 0.5 plays twice as fast (default: ${DEFAULT-VALUE})")
     double timeScale;
 
+    @Option(names = "--bt-format", paramLabel = "3|4",
+            description = "weave and run the behaviour tree as BehaviorTree.CPP 3 or 4 (default: the version of the model's tree)")
+    Integer btFormat;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -70,6 +76,9 @@ public class DemoCommand implements Callable<Integer> {
         if (!(timeScale > 0)) {
             return usage("--time-scale must be positive");
         }
+        if (btFormat != null && btFormat != 3 && btFormat != 4) {
+            return usage("--bt-format must be 3 or 4, not " + btFormat);
+        }
         Path generated = out.resolve("model");
         String name = modelFile.getFileName().toString().replaceFirst("\\.miron$", "");
         PrintWriter console = spec.commandLine().getOut();
@@ -77,7 +86,12 @@ public class DemoCommand implements Callable<Integer> {
         CommandLine generate = MironCli.commandLine();
         generate.setOut(spec.commandLine().getOut());
         generate.setErr(spec.commandLine().getErr());
-        int status = generate.execute("generate", "-o", generated.toString(), modelFile.toString());
+        List<String> arguments = new ArrayList<>(List.of("generate", "-o", generated.toString()));
+        if (btFormat != null) {
+            arguments.addAll(List.of("--bt-format", btFormat.toString()));
+        }
+        arguments.add(modelFile.toString());
+        int status = generate.execute(arguments.toArray(String[]::new));
         if (status != 0) {
             return status;
         }
@@ -93,12 +107,13 @@ public class DemoCommand implements Callable<Integer> {
         } catch (IOException | RuntimeException e) {
             return usage("miron demo: error: " + e.getMessage());
         }
+        Path tree = generated.resolve(name + ".ext.xml");
         console.println("MIRoN demo: broker, engine, skill interface mock, BT executor and scenario player start;"
                 + " the scenario lasts about " + Math.round(lastStep(steps) * timeScale / 1000.0) + " s.");
         console.println("    time  who     what");
         Demo.Result result;
         try {
-            result = new Demo(generated.resolve(name + ".io.json"), generated.resolve(name + ".ext.xml"), steps, table,
+            result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
                     out, Endpoints.freeLoopback(), console).timeScale(timeScale).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());

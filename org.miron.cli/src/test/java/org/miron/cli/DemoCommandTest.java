@@ -8,6 +8,8 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 
 import org.junit.BeforeClass;
 import org.junit.Rule;
@@ -35,6 +37,18 @@ public class DemoCommandTest {
 
     @Test
     public void theRobotDocksWhenTheBatteryRunsLowAndSlowsDownWhenSafetyDrops() throws Exception {
+        String told = runDemo(3);
+        assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 3."));
+    }
+
+    /** The same demo with the tree woven for BehaviorTree.CPP 4 and run with its semantics. */
+    @Test
+    public void theDemoRunsTheSameOnTheVersion4Tree() throws Exception {
+        String told = runDemo(4, "--bt-format", "4");
+        assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 4."));
+    }
+
+    private String runDemo(int version, String... options) throws Exception {
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         CommandLine cli = MironCli.commandLine();
@@ -42,7 +56,9 @@ public class DemoCommandTest {
         cli.setErr(new PrintWriter(err, true));
         Path dir = temp.getRoot().toPath();
 
-        int status = cli.execute("demo", "--out", dir.toString(), "--time-scale", "0.4");
+        List<String> arguments = new ArrayList<>(List.of("demo", "--out", dir.toString(), "--time-scale", "0.4"));
+        arguments.addAll(List.of(options));
+        int status = cli.execute(arguments.toArray(String[]::new));
 
         String told = out.toString();
         assertEquals(err.toString() + told, 0, status);
@@ -63,7 +79,18 @@ public class DemoCommandTest {
         assertTrue(report.contains("<td>task</td><td>pickDeliverCharge</td><td>dock</td>"));
         assertTrue(report.contains("<td>maxVelocity</td><td>100</td><td>10</td>"));
         assertTrue(Files.readAllLines(dir.resolve("decisions.jsonl")).size() >= 4);
-        assertTrue(Files.exists(dir.resolve("model/intralogistics.ext.xml")));
+        String tree = Files.readString(dir.resolve("model/intralogistics.ext.xml"));
+        assertEquals(tree, version == 4, tree.contains("BTCPP_format=\"4\""));
+        return told;
+    }
+
+    @Test
+    public void onlyBehaviorTreeCpp3And4AreFormats() {
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setErr(new PrintWriter(err, true));
+        assertEquals(2, cli.execute("demo", "--bt-format", "5", "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("--bt-format must be 3 or 4, not 5"));
     }
 
     @Test

@@ -71,6 +71,8 @@ public final class Demo {
                     LiveExecutor executor = new LiveExecutor(endpoints).build(tree, narrator);
                     ScenarioPlayer player = new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
                 narrator.setClock(recorder);
+                out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
+                        + executor.tree().formatVersion() + ".");
                 engine.start();
                 Thread robot = new Thread(() -> {
                     while (!scenarioOver.get()) {

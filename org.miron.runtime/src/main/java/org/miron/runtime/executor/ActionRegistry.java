@@ -22,6 +22,7 @@ public final class ActionRegistry {
     private final Map<String, ActionFactory> factories = new ConcurrentHashMap<>();
     private final Map<String, ControlFactory> controls = new ConcurrentHashMap<>();
     private final Map<String, DecoratorFactory> decorators = new ConcurrentHashMap<>();
+    private final Map<String, Integer> scriptingEnums = new ConcurrentHashMap<>();
     private volatile UnregisteredActionStrategy fallback = UnregisteredActionStrategy.REJECT;
 
     /** Registers any node factory under an ID, replacing an earlier one. */
@@ -104,6 +105,28 @@ public final class ActionRegistry {
             throw new BtBuildException(info.path() + ": the factory for '" + id + "' made no node");
         }
         return node;
+    }
+
+    /**
+     * A name version-4 scripts read as a number (BT.CPP 4's registerScriptingEnum): in
+     * {@code _skipIf="color == RED"}, RED is this value. Enum names win over blackboard keys.
+     */
+    public ActionRegistry registerScriptingEnum(String name, int value) {
+        scriptingEnums.put(Objects.requireNonNull(name), value);
+        return this;
+    }
+
+    /** Every constant of a Java enum, by name, as its ordinal (BT.CPP 4's registerScriptingEnums). */
+    public ActionRegistry registerScriptingEnums(Class<? extends Enum<?>> type) {
+        for (Enum<?> constant : type.getEnumConstants()) {
+            registerScriptingEnum(constant.name(), constant.ordinal());
+        }
+        return this;
+    }
+
+    /** The registered scripting enums, name to value (a snapshot). */
+    public Map<String, Integer> scriptingEnums() {
+        return Map.copyOf(scriptingEnums);
     }
 
     public ActionRegistry setFallback(UnregisteredActionStrategy strategy) {

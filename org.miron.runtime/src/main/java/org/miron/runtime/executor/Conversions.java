@@ -96,6 +96,14 @@ public final class Conversions {
         }
     }
 
+    /** As {@link #toStatus}, SKIPPED accepted too (version-4 ports such as if_empty and else). */
+    public static NodeStatus toStatusOrSkipped(Object value) {
+        if (String.valueOf(value).trim().equalsIgnoreCase("SKIPPED")) {
+            return NodeStatus.SKIPPED;
+        }
+        return toStatus(value);
+    }
+
     /**
      * A literal as a skill or action argument: an integer or a number when it reads as one, else
      * the string itself.

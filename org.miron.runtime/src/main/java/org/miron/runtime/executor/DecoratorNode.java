@@ -28,4 +28,12 @@ public abstract class DecoratorNode extends Node {
     protected void onHalt() {
         resetChild();
     }
+
+    /** BT.CPP 4's DecoratorNode::executeTick: a child left finished is set back to IDLE. */
+    @Override
+    void afterTickV4() {
+        if (child.status().isCompleted()) {
+            child.halt();
+        }
+    }
 }

@@ -10,22 +10,53 @@ import java.util.List;
 public abstract class Node {
     private final NodeInfo info;
     private volatile NodeStatus status = NodeStatus.IDLE;
+    /** Version-4 pre/post-conditions; null in a version-3 tree, which has none. */
+    private Conditions conditions;
 
     protected Node(NodeInfo info) {
         this.info = info;
     }
 
-    /** Ticks the node once and returns (and records) its new status, never IDLE. */
+    /**
+     * Ticks the node once and returns (and records) its new status, never IDLE. In a version-4
+     * tree the pre-conditions may decide the status instead of {@link #tick()}, the post-conditions
+     * run when it has finished, and a SKIPPED node stays IDLE (as BT.CPP 4's executeTick).
+     */
     public final NodeStatus executeTick() {
-        NodeStatus result = tick();
+        NodeStatus result = conditions == null ? null : conditions.before(this);
+        if (result == null) {
+            result = tick();
+        }
         if (result == null || result == NodeStatus.IDLE) {
             throw new BtRuntimeException(path() + ": a node must never return " + result + " to its parent");
         }
-        setStatus(result);
+        if (conditions != null) {
+            if (result.isCompleted()) {
+                conditions.after(this, result);
+            }
+            afterTickV4();
+        }
+        if (result != NodeStatus.SKIPPED) {
+            setStatus(result);
+        }
         return result;
     }
 
-    /** The node's behaviour for one tick: RUNNING, SUCCESS or FAILURE. */
+    /** Version 4 only: what BT.CPP 4 does after every tick of this kind of node (decorators reset a finished child). */
+    void afterTickV4() {
+    }
+
+    /** Makes this a version-4 node with these pre/post-conditions (the builder calls it once). */
+    final void useConditions(Conditions conditions) {
+        this.conditions = conditions;
+    }
+
+    /** True in a version-4 tree (BTCPP_format="4"). */
+    protected final boolean isVersion4() {
+        return conditions != null;
+    }
+
+    /** The node's behaviour for one tick: RUNNING, SUCCESS or FAILURE (or, in version 4, SKIPPED). */
     protected abstract NodeStatus tick();
 
     /**
@@ -34,10 +65,14 @@ public abstract class Node {
      * haltChild does, which is what lets a SequenceStar keep its position after a FAILURE.
      */
     public final void halt() {
-        if (status == NodeStatus.RUNNING) {
+        boolean running = status == NodeStatus.RUNNING;
+        if (running) {
             onHalt();
         }
         setStatus(NodeStatus.IDLE);
+        if (running && conditions != null) {
+            conditions.halted(this);
+        }
     }
 
     /** Stops whatever runs below or inside this node and forgets its progress. */

@@ -32,8 +32,8 @@ public final class Ports {
         if (value == null) {
             return Optional.empty();
         }
-        if (value.equals("=")) {
-            return Optional.of(port);
+        if (value.equals("=") || value.equals("{=}")) {
+            return Optional.of(port); // "{=}": the version-4 spelling
         }
         int n = value.length();
         if (n >= 3 && value.charAt(0) == '{' && value.charAt(n - 1) == '}') {

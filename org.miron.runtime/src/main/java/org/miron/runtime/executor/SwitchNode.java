@@ -1,6 +1,7 @@
 package org.miron.runtime.executor;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 
 /**
@@ -10,10 +11,18 @@ import java.util.Optional;
  */
 public class SwitchNode extends ControlNode {
     private final int cases;
+    /** Version 4 also matches equal numbers and enum names ("2" and "2.0", "RED" and "1"); null in version 3. */
+    private final Map<String, Integer> v4Enums;
     private int runningChild = -1;
 
     public SwitchNode(NodeInfo info, int cases, List<Node> children) {
+        this(info, cases, children, null);
+    }
+
+    /** @param v4Enums the scripting enums for a version-4 tree, null for version 3 */
+    public SwitchNode(NodeInfo info, int cases, List<Node> children, Map<String, Integer> v4Enums) {
         super(info, children);
+        this.v4Enums = v4Enums;
         if (children.size() != cases + 1) {
             throw new BtBuildException(info.path() + ": Switch" + cases + " needs " + (cases + 1)
                     + " children (" + cases + " cases and a default), not " + children.size());
@@ -29,6 +38,10 @@ public class SwitchNode extends ControlNode {
         }
         setStatus(NodeStatus.RUNNING);
         NodeStatus result = tickChild(match);
+        if (result == NodeStatus.SKIPPED) {
+            runningChild = -1;
+            return result;
+        }
         if (result == NodeStatus.RUNNING) {
             runningChild = match;
         } else {
@@ -44,12 +57,44 @@ public class SwitchNode extends ControlNode {
         if (variable.isPresent()) {
             for (int i = 0; i < cases; i++) {
                 Optional<String> value = ports().getString("case_" + (i + 1));
-                if (value.isPresent() && value.get().equals(variable.get())) {
+                if (value.isPresent() && matches(variable.get(), value.get())) {
                     return i;
                 }
             }
         }
         return cases;
+    }
+
+    private boolean matches(String variable, String value) {
+        if (variable.equals(value)) {
+            return true;
+        }
+        if (v4Enums == null) {
+            return false;
+        }
+        // BT.CPP 4's CheckStringEquality: as integers (enum names included), then as reals
+        Long a = asInteger(variable);
+        Long b = asInteger(value);
+        if (a != null && b != null && a.equals(b)) {
+            return true;
+        }
+        try {
+            return Math.abs(Double.parseDouble(variable.trim()) - Double.parseDouble(value.trim())) <= Math.ulp(1.0f);
+        } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+
+    private Long asInteger(String text) {
+        Integer named = v4Enums.get(text);
+        if (named != null) {
+            return named.longValue();
+        }
+        try {
+            return Long.parseLong(text.trim());
+        } catch (NumberFormatException e) {
+            return null;
+        }
     }
 
     @Override

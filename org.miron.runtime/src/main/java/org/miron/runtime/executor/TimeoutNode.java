@@ -18,7 +18,9 @@ public class TimeoutNode extends DecoratorNode {
     protected NodeStatus tick() {
         int msec = ports().requireInt(MSEC);
         boolean firstTick = timer.isIdle();
-        if (timer.elapsed(context().clock()) >= msec && !firstTick) {
+        // BT.CPP 4 starts no timer for msec="0": the child may run for ever
+        boolean expires = !(isVersion4() && msec == 0);
+        if (timer.elapsed(context().clock()) >= msec && !firstTick && expires) {
             timer.reset();
             resetChild();
             return NodeStatus.FAILURE;

@@ -15,22 +15,49 @@ public final class Tree {
     private final Node root;
     private final Blackboard blackboard;
     private final TreeContext context;
+    private final int formatVersion;
     private final List<BlackboardFeed> feeds = new CopyOnWriteArrayList<>();
     private volatile boolean stopRequested;
 
     public Tree(String id, Node root, Blackboard blackboard, TreeContext context) {
+        this(id, root, blackboard, context, 3);
+    }
+
+    /** @param formatVersion the BehaviorTree.CPP version whose semantics the nodes follow (3 or 4) */
+    public Tree(String id, Node root, Blackboard blackboard, TreeContext context, int formatVersion) {
+        this.formatVersion = formatVersion;
         this.id = id;
         this.root = root;
         this.blackboard = blackboard;
         this.context = context;
     }
 
-    /** Ticks the root once; a finished root is set back to IDLE so the next tick starts over (as BT.CPP 3). */
+    /**
+     * Ticks the root once; a finished root is set back to IDLE so the next tick starts over (as
+     * BT.CPP 3). In a version-4 tree this is BT.CPP 4's tickOnce: while the root is RUNNING and a
+     * node asked for a wake-up, the root is ticked again at once (at most
+     * {@link TreeContext#maxLoopsPerTick()} times, so Repeat(-1) over a child that succeeds at once
+     * cannot hang the tree).
+     */
     public NodeStatus tickRoot() {
+        return tick(true);
+    }
+
+    /** BT.CPP 4's tickExactlyOnce: one tick of the root, wake-ups are not followed. */
+    public NodeStatus tickExactlyOnce() {
+        return tick(false);
+    }
+
+    private NodeStatus tick(boolean followWakeUps) {
         for (BlackboardFeed feed : feeds) {
             feed.applyTo(blackboard);
         }
+        context.takeWakeUp();
         NodeStatus status = root.executeTick();
+        for (int again = 0; followWakeUps && status == NodeStatus.RUNNING && again < context.maxLoopsPerTick()
+                && context.takeWakeUp(); again++) {
+            status = root.executeTick();
+        }
         if (status.isCompleted()) {
             root.halt();
         }
@@ -87,6 +114,11 @@ public final class Tree {
 
     public String id() {
         return id;
+    }
+
+    /** The BehaviorTree.CPP version the tree runs as: its file's BTCPP_format (3 when absent). */
+    public int formatVersion() {
+        return formatVersion;
     }
 
     public Node root() {

@@ -50,6 +50,7 @@ import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.util.BtAttributes;
+import org.miron.bt.util.BtFormats;
 import org.miron.bt.util.BtTrees;
 
 /**
@@ -65,6 +66,8 @@ public final class TreeBuilder {
     private final ActionRegistry registry;
     private final TreeContext context;
     private final Map<Resource, Map<String, BehaviorTree>> visibleTrees = new HashMap<>();
+    /** Makes the version-4 nodes while a version-4 tree is built; null for version 3. */
+    private V4Nodes v4;
 
     public TreeBuilder(ActionRegistry registry, TreeContext context) {
         this.registry = registry;
@@ -98,10 +101,16 @@ public final class TreeBuilder {
         return build(tree);
     }
 
+    /** The tree, with the semantics of its file's version (BTCPP_format, absent = 3). */
     public Tree build(BehaviorTree tree) {
         Blackboard blackboard = Blackboard.create();
-        Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
-        return new Tree(BtTrees.runName(tree), root, blackboard, context);
+        v4 = BtFormats.versionOf(tree) == 4 ? new V4Nodes(registry.scriptingEnums()) : null;
+        try {
+            Node root = buildTree(tree, blackboard, "", new ArrayDeque<>());
+            return new Tree(BtTrees.runName(tree), root, blackboard, context, v4 != null ? 4 : 3);
+        } finally {
+            v4 = null;
+        }
     }
 
     private Map<String, BehaviorTree> trees(EObject object) {
@@ -137,6 +146,38 @@ public final class TreeBuilder {
         String name = displayName(node);
         String path = parentPath + "/" + name;
         NodeInfo info = new NodeInfo(name, path, new Ports(path, attributes(node), blackboard), context);
+        if (v4 == null) {
+            return buildNode(node, info, blackboard, stack);
+        }
+        boolean isSubtree = node instanceof SubtreeNode
+                || (node instanceof Action && !"Action".equals(node.getTag()) && trees(node).containsKey(node.getTag()));
+        if (!isSubtree) {
+            V4Nodes.declarePorts(info); // a SubTree's attributes remap, they declare nothing (as BT.CPP 4)
+        }
+        Node built;
+        if (V4Nodes.isV4Builtin(node.getTag()) && !(node instanceof SubtreeNode)) {
+            List<Node> children = new ArrayList<>();
+            for (TreeNode child : V4Nodes.children(node)) {
+                children.add(buildNode(child, blackboard, path, stack));
+            }
+            built = v4.create(node.getTag(), info, children);
+        } else if (node instanceof SubtreeNode subtree) {
+            built = subtreeV4(target(subtree, info), info, blackboard, stack);
+        } else {
+            built = buildNode(node, info, blackboard, stack);
+        }
+        built.useConditions(v4.conditions(node, path));
+        return built;
+    }
+
+    /** Version-4 SubTree: its blackboard prepared by {@link V4Nodes#subtreeBlackboard}. */
+    private Node subtreeV4(BehaviorTree tree, NodeInfo info, Blackboard parent, Deque<String> stack) {
+        Blackboard blackboard = V4Nodes.subtreeBlackboard(info, parent);
+        return new SubTreeNode(info, tree.getName(), blackboard, buildTree(tree, blackboard, info.path(), stack));
+    }
+
+    private Node buildNode(TreeNode node, NodeInfo info, Blackboard blackboard, Deque<String> stack) {
+        String path = info.path();
         if (node instanceof ControlNode control) {
             return control(control, info, childrenOf(control, blackboard, path, stack));
         }
@@ -173,7 +214,7 @@ public final class TreeBuilder {
                 // compact form <X .../>: a tree ID used as a tag is a SubTree, anything else an action ID
                 BehaviorTree tree = trees(node).get(node.getTag());
                 if (tree != null) {
-                    return plainSubtree(tree, info, blackboard, stack);
+                    return v4 != null ? subtreeV4(tree, info, blackboard, stack) : plainSubtree(tree, info, blackboard, stack);
                 }
                 return registry.create(new ActionSpec(node.getTag(), ActionSpec.Kind.ACTION, info));
             }
@@ -225,7 +266,7 @@ public final class TreeBuilder {
             } catch (RuntimeException e) {
                 throw new BtBuildException(info.path() + ": unknown switch " + tag);
             }
-            return new SwitchNode(info, cases, children);
+            return new SwitchNode(info, cases, children, v4 == null ? null : registry.scriptingEnums());
         }
         throw new BtBuildException(info.path() + ": unsupported control node " + tag);
     }

@@ -15,6 +15,7 @@ public final class TreeContext {
     private final MillisClock clock;
     private final int maxLoopsPerTick;
     private final List<StatusListener> listeners = new CopyOnWriteArrayList<>();
+    private volatile boolean wakeUp;
 
     public TreeContext() {
         this(MillisClock.SYSTEM, DEFAULT_MAX_LOOPS_PER_TICK);
@@ -38,6 +39,22 @@ public final class TreeContext {
 
     public int maxLoopsPerTick() {
         return maxLoopsPerTick;
+    }
+
+    /**
+     * A version-4 node asks for the tree to be ticked again at once (BT.CPP 4's emitWakeUpSignal:
+     * SequenceWithMemory, Repeat and RetryUntilSuccessful yield after each child that finished
+     * within one tick, and {@link Tree#tickRoot()} ticks again).
+     */
+    public void emitWakeUp() {
+        wakeUp = true;
+    }
+
+    /** Whether a wake-up was asked for since the last call, and forgets it. */
+    boolean takeWakeUp() {
+        boolean asked = wakeUp;
+        wakeUp = false;
+        return asked;
     }
 
     public void addListener(StatusListener listener) {

@@ -1,6 +1,9 @@
 /**
  * The behaviour-tree executor: runs a .bt file (or a woven .ext.xml) with BehaviorTree.CPP 3
- * semantics (the project's BT semantics reference: statuses, halting, every node of the BT language).
+ * semantics (the project's BT semantics reference: statuses, halting, every node of the BT language),
+ * or BehaviorTree.CPP 4 semantics when the file has {@code <root BTCPP_format="4">}: SKIPPED,
+ * pre/post-condition attributes, wake-ups, the version-4 nodes and the scripting language
+ * (docs/bt-semantics.md, "Version 4").
  *
  * <h2>Using it</h2>
  * <pre>{@code
@@ -21,6 +24,16 @@
  * a subscriber publishes {@code miron.variant.<vp>} values into one, {@code miron.blackboard.<vp>}
  * values into another; {@link org.miron.runtime.executor.SkillClient} is where a ZeroMQ client of
  * the SmartSoft skill interface plugs in.
+ *
+ * <h2>Version 4</h2>
+ * {@link org.miron.runtime.executor.TreeBuilder} reads the version from the file; for version 4,
+ * {@code V4Nodes} makes the nodes whose behaviour changed (the *V4 classes) or that are new, and
+ * gives every node its {@code Conditions} (the _skipIf.._onHalted scripts, run by
+ * {@link org.miron.runtime.executor.Node#executeTick()}). Scripts are parsed once by the BT
+ * language ({@code BtScripts}) and compiled by {@code ScriptCompiler} into
+ * {@link org.miron.runtime.executor.ScriptCode} closures; {@code ScriptOperators} and
+ * {@link org.miron.runtime.executor.ScriptValues} hold BT.CPP 4's value rules. Enums for scripts are
+ * registered on the {@link org.miron.runtime.executor.ActionRegistry}.
  *
  * <h2>Design</h2>
  * {@link org.miron.runtime.executor.TreeBuilder} turns the EMF model into one runtime

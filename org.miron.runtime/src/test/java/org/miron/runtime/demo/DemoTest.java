@@ -13,7 +13,12 @@ import java.util.Map;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.bt.bt.BTModel;
+import org.miron.bt.convert.BtFormatConverter;
+import org.miron.bt.convert.Conversion;
+import org.miron.bt.formatting2.BtFormatting;
 import org.miron.runtime.Json;
+import org.miron.runtime.executor.BtLoader;
 import org.miron.runtime.Ports;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.skill.SkillTable;
@@ -29,11 +34,28 @@ public class DemoTest {
 
     @Test
     public void batteryAndSafetyDrivesAdaptationsThatAreToldAndReported() throws Exception {
+        runAndCheck(Path.of("src/test/resources/executor/intralogistics.ext.xml"), 3);
+    }
+
+    /** The woven tree converted to BehaviorTree.CPP 4 (as `miron convert --to 4`) adapts the same way. */
+    @Test
+    public void itsVersion4ConversionAdaptsTheSameWay() throws Exception {
+        BTModel model = new BtLoader().load(Path.of("src/test/resources/executor/intralogistics.ext.xml")).model();
+        Conversion conversion = BtFormatConverter.convert(model, 4);
+        assertTrue(conversion.getProblems().toString(), conversion.succeeded());
+        String v4 = BtFormatting.print(model);
+        assertTrue(v4, v4.contains("BTCPP_format=\"4\"") && v4.contains("<SubTree ") && !v4.contains("SubTreePlus"));
+        Path tree = temp.newFolder("v4").toPath().resolve("intralogistics.ext.xml");
+        Files.writeString(tree, v4);
+        runAndCheck(tree, 4);
+    }
+
+    private void runAndCheck(Path tree, int version) throws Exception {
         SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
         SkillTable.Entry hand = new SkillTable.Entry(100, "SUCCESS", NullNode.getInstance(), Json.object());
         StringWriter console = new StringWriter();
         Demo demo = new Demo(Path.of("src/test/resources/models/testbot.io.json"),
-                Path.of("src/test/resources/executor/intralogistics.ext.xml"),
+                tree,
                 Scenario.load(Path.of("src/test/resources/demo/short.scenario.json")),
                 new SkillTable(Map.of("navigate", move, "objectpick", hand, "objectdrop", hand)),
                 temp.getRoot().toPath(), Ports.endpoints(), new PrintWriter(console, true));
@@ -41,6 +63,7 @@ public class DemoTest {
         Demo.Result result = demo.run();
 
         String told = console.toString();
+        assertTrue(told, told.contains(tree.getFileName() + " runs as BehaviorTree.CPP " + version + "."));
         assertTrue(told, told.contains("RoQME   power_autonomy = 0.2"));
         assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch)"));
         assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge"));

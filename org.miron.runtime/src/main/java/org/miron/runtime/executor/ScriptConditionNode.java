@@ -1,0 +1,29 @@
+package org.miron.runtime.executor;
+
+import java.util.Map;
+
+/** ScriptCondition(code) (BT.CPP 4): SUCCESS when its script is true, FAILURE when false. */
+public final class ScriptConditionNode extends Node {
+    private final ScriptCode code;
+    private final Map<String, Integer> enums;
+
+    public ScriptConditionNode(NodeInfo info, ScriptCode code, Map<String, Integer> enums) {
+        super(info);
+        this.code = code;
+        this.enums = enums;
+    }
+
+    @Override
+    protected NodeStatus tick() {
+        return isTrue(this, "code", Conditions.runScript(code, this, "code", enums)) ? NodeStatus.SUCCESS : NodeStatus.FAILURE;
+    }
+
+    /** A script's value as a condition, a value that is none being the node's error. */
+    static boolean isTrue(Node node, String attribute, Object value) {
+        try {
+            return ScriptValues.toBoolean(value);
+        } catch (ScriptException e) {
+            throw new BtRuntimeException(node.path() + ": " + attribute + ": " + e.getMessage(), e);
+        }
+    }
+}
