@@ -92,7 +92,14 @@ def load(path):
         inline_includes(root, os.path.dirname(os.path.abspath(path)), {os.path.abspath(path)})
         factory = bt.BehaviorTreeFactory()
         text = prepare(root, factory)
-        factory.create_tree_from_text(text)
+        trees = [tree.get("ID") for tree in root.findall("BehaviorTree")]
+        if root.get("main_tree_to_execute") is None and len(trees) > 1:
+            # A library of trees (included by others, no main tree): each one must instantiate.
+            factory.register_behavior_tree_from_text(text)
+            for tree_id in trees:
+                factory.create_tree(tree_id)
+        else:
+            factory.create_tree_from_text(text)
         return "loaded", ""
     except Exception as error:  # the library's exceptions carry its message
         return "rejected", " ".join(str(error).split())

@@ -127,6 +127,11 @@ final class V3ToV4 {
         a.setValue(condition);
         remove(attributes, "value_B");
         rename(attributes, "return_on_mismatch", "else");
+        // Groot writes unset ports empty; version 3 then returns FAILURE, version 4 would fail to
+        // read else="" on every tick: leave it out, FAILURE is v4's default too.
+        if ("".equals(precondition.attribute("else"))) {
+            remove(attributes, "else");
+        }
     }
 
     static boolean isTrue(String value) {
