@@ -149,6 +149,13 @@ class BtWeaver {
 		val originals = <EObject, EObject>newHashMap
 		copier.forEach[original, copied|originals.put(copied, original)]
 		val conversion = BtFormatConverter.convert(copy, format)
+		// Targets are found through the copier: point it at the nodes that replaced converted ones.
+		for (entry : copier.entrySet.toList) {
+			val replacement = conversion.replacements.get(entry.value)
+			if (replacement !== null) {
+				entry.value = replacement
+			}
+		}
 		for (problem : conversion.problems) {
 			val original = originals.get(problem.element) ?: originals.get(copy)
 			errors += new GenerationError(original, '''cannot weave a BehaviorTree.CPP «format» tree: «problem.message»''')
