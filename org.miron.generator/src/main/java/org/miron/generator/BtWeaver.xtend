@@ -102,6 +102,12 @@ class BtWeaver {
 		for (copy : copies) {
 			convert(copy)
 		}
+		for (target : targets.values.flatten) {
+			if (!EcoreUtil.isAncestor(copies, copier.get(target))) {
+				// e.g. value_B of a BlackboardCheck, which becomes part of a Precondition's script
+				errors += new GenerationError(target, '''cannot weave into this element in a BehaviorTree.CPP «format» tree: the conversion to version «format» rewrites it''')
+			}
+		}
 		if (!errors.empty) {
 			return null
 		}
