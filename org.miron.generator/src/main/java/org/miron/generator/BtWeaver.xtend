@@ -102,6 +102,12 @@ class BtWeaver {
 		for (copy : copies) {
 			convert(copy)
 		}
+		for (target : targets.values.flatten) {
+			if (!EcoreUtil.isAncestor(copies, copier.get(target))) {
+				// e.g. value_B of a BlackboardCheck, which becomes part of a Precondition's script
+				errors += new GenerationError(target, '''cannot weave into this element in a BehaviorTree.CPP «format» tree: the conversion to version «format» rewrites it''')
+			}
+		}
 		if (!errors.empty) {
 			return null
 		}
@@ -158,6 +164,13 @@ class BtWeaver {
 			}
 		}
 		val conversion = BtFormatConverter.convert(copy, format)
+		// Targets are found through the copier: point it at the nodes that replaced converted ones.
+		for (entry : copier.entrySet.toList) {
+			val replacement = conversion.replacements.get(entry.value)
+			if (replacement !== null) {
+				entry.value = replacement
+			}
+		}
 		for (problem : conversion.problems) {
 			val original = originals.get(problem.element) ?: originals.get(copy)
 			errors += new GenerationError(original, '''cannot weave a BehaviorTree.CPP «format» tree: «problem.message»''')

@@ -37,6 +37,10 @@ public class WovenVersion4Test {
         return models;
     }
 
+    private static int count(String text, String part) {
+        return text.split(java.util.regex.Pattern.quote(part), -1).length - 1;
+    }
+
     private static String base(Path model) {
         return model.getFileName().toString().replaceFirst("\\.miron$", "");
     }
@@ -56,6 +60,13 @@ public class WovenVersion4Test {
             }
             Path tree = out.resolve(base(model) + ".ext.xml");
             String text = Files.readString(tree);
+            // The same weaving as in the imported tree's format: as many Switches, VariantActions, calls.
+            Path v3 = temp.newFolder("v3-" + base(model)).toPath();
+            assertEquals(0, new Toolchain().generate(model.toString(), v3.toString()));
+            String v3Text = Files.readString(v3.resolve(base(model) + ".ext.xml"));
+            for (String element : List.of("<Switch", "VariantAction\"", "ID=\"")) {
+                assertEquals(model + " " + element + ":\n" + text, count(v3Text, element), count(text, element));
+            }
             assertTrue(text, text.contains("<root BTCPP_format=\"4\""));
             assertFalse(text, text.contains("SubTreePlus") || text.contains("success_threshold")
                     || text.contains("SequenceStar") || text.contains("__shared_blackboard"));

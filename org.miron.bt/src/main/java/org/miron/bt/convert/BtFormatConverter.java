@@ -1,7 +1,9 @@
 package org.miron.bt.convert;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 
 import org.eclipse.emf.ecore.EObject;
 import java.util.regex.Matcher;
@@ -41,7 +43,7 @@ public final class BtFormatConverter {
             throw new IllegalArgumentException("BehaviorTree.CPP format " + targetVersion + " (3 or 4)");
         }
         if (BtFormats.version(model) == targetVersion) {
-            return new Conversion(List.of());
+            return new Conversion(List.of(), Map.of());
         }
         List<TreeNode> nodes = new ArrayList<>();
         for (EObject object : (Iterable<EObject>) () -> EcoreUtil.getAllContents(model, true)) {
@@ -58,17 +60,18 @@ public final class BtFormatConverter {
             }
         }
         if (!problems.isEmpty()) {
-            return new Conversion(problems);
+            return new Conversion(problems, Map.of());
         }
+        Map<EObject, EObject> replacements = new HashMap<>();
         for (TreeNode node : nodes) {
             if (targetVersion == 4) {
-                V3ToV4.apply(node);
+                V3ToV4.apply(node, replacements);
             } else {
-                V4ToV3.apply(node);
+                V4ToV3.apply(node, replacements);
             }
         }
         setFormat(model, targetVersion);
-        return new Conversion(List.of());
+        return new Conversion(List.of(), replacements);
     }
 
     /**

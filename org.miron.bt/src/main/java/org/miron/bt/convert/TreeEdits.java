@@ -2,8 +2,10 @@ package org.miron.bt.convert;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BtFactory;
@@ -51,8 +53,11 @@ final class TreeEdits {
         }
     }
 
-    /** Replaces the node by a new node of another class with its tag, attributes and children. */
-    static TreeNode become(TreeNode node, EClass eClass, String tag) {
+    /**
+     * Replaces the node by a new node of another class with its tag, attributes and children,
+     * recording the replacement (callers holding the old node look the new one up there).
+     */
+    static TreeNode become(TreeNode node, EClass eClass, String tag, Map<EObject, EObject> replacements) {
         TreeNode result = (TreeNode) BtFactory.eINSTANCE.create(eClass);
         result.setTag(tag);
         result.getAttributes().addAll(new ArrayList<>(node.getAttributes()));
@@ -65,6 +70,7 @@ final class TreeEdits {
             ((SubtreeNode) result).setBehaviorTree(((SubtreeNode) node).getBehaviorTree());
         }
         EcoreUtil.replace(node, result);
+        replacements.put(node, result);
         return result;
     }
 

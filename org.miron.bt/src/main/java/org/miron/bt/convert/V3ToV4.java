@@ -5,6 +5,7 @@ import static org.miron.bt.convert.TreeEdits.*;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.emf.ecore.EObject;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BehaviorTree;
 import org.miron.bt.bt.BtPackage;
@@ -52,7 +53,7 @@ final class V3ToV4 {
         }
     }
 
-    static void apply(TreeNode node) {
+    static void apply(TreeNode node, Map<EObject, EObject> replacements) {
         String tag = node.getTag();
         if ("SequenceStar".equals(tag)) {
             node.setTag("SequenceWithMemory");
@@ -65,28 +66,28 @@ final class V3ToV4 {
                 rename(node.getAttributes(), port.getKey(), port.getValue());
             }
         } else if (node instanceof Subtree) {
-            subtree(node);
+            subtree(node, replacements);
         } else if (node instanceof SubtreePlus) {
-            subtreePlus(node);
+            subtreePlus(node, replacements);
         } else if (tag != null && tag.startsWith("BlackboardCheck")) {
-            blackboardCheck(node);
+            blackboardCheck(node, replacements);
         } else if (("Action".equals(tag) || "Condition".equals(tag)) && node.attribute("ID") != null
                 && node.eContainer() instanceof TreeNode
                 && "ReactiveSequence".equals(((TreeNode) node.eContainer()).getTag())) {
             // BT.CPP 4 looks ReactiveSequence's children up by element name: the compact form loads.
             String id = remove(node.getAttributes(), "ID");
-            become(node, BtPackage.Literals.ACTION, id);
+            become(node, BtPackage.Literals.ACTION, id, replacements);
         } else if (BtTrees.isCompactSubtree(node)) {
             // <Tree/> for <SubTree ID="Tree"/>: version 4 only knows the explicit form.
             BehaviorTree tree = BtTrees.visibleTreesOf(node).get(tag);
-            TreeNode subtree = become(node, BtPackage.Literals.SUBTREE, "SubTree");
+            TreeNode subtree = become(node, BtPackage.Literals.SUBTREE, "SubTree", replacements);
             ((Subtree) subtree).setBehaviorTree(tree);
-            subtree(subtree);
+            subtree(subtree, replacements);
         }
     }
 
     /** v3 SubTree ports name the parent's key; v4 writes the key in braces. __shared_blackboard becomes _autoremap. */
-    private static void subtree(TreeNode node) {
+    private static void subtree(TreeNode node, Map<EObject, EObject> replacements) {
         for (Attribute attribute : List.copyOf(node.getAttributes())) {
             String name = attribute.getName();
             if (name.equals("__shared_blackboard")) {
@@ -106,8 +107,8 @@ final class V3ToV4 {
      * SubTreePlus is v4's SubTree: ports as written, __autoremap renamed. Without __autoremap it
      * says _autoremap="false" (the default), which tells SubTreePlus from SubTree on the way back.
      */
-    private static void subtreePlus(TreeNode node) {
-        TreeNode subtree = become(node, BtPackage.Literals.SUBTREE, "SubTree");
+    private static void subtreePlus(TreeNode node, Map<EObject, EObject> replacements) {
+        TreeNode subtree = become(node, BtPackage.Literals.SUBTREE, "SubTree", replacements);
         remove(subtree.getAttributes(), "__shared_blackboard"); // no meaning on SubTreePlus
         if (subtree.attribute("__autoremap") == null) {
             subtree.getAttributes().add(attribute("_autoremap", "false"));
@@ -116,11 +117,11 @@ final class V3ToV4 {
         }
     }
 
-    private static void blackboardCheck(TreeNode node) {
+    private static void blackboardCheck(TreeNode node, Map<EObject, EObject> replacements) {
         String tag = node.getTag();
         String condition = BlackboardChecks.operand(tag, node.attribute("value_A")) + " == "
                 + BlackboardChecks.operand(tag, node.attribute("value_B"));
-        TreeNode precondition = become(node, BtPackage.Literals.PRECONDITION, "Precondition");
+        TreeNode precondition = become(node, BtPackage.Literals.PRECONDITION, "Precondition", replacements);
         List<Attribute> attributes = precondition.getAttributes();
         Attribute a = org.miron.bt.util.BtAttributes.find(attributes, "value_A");
         a.setName("if");

@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Set;
 
 import org.eclipse.emf.ecore.EClass;
+import org.eclipse.emf.ecore.EObject;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BtPackage;
 import org.miron.bt.bt.Parallel;
@@ -47,7 +48,7 @@ final class V4ToV3 {
         }
     }
 
-    static void apply(TreeNode node) {
+    static void apply(TreeNode node, Map<EObject, EObject> replacements) {
         String tag = node.getTag();
         if ("SequenceWithMemory".equals(tag)) {
             node.setTag("SequenceStar");
@@ -58,9 +59,9 @@ final class V4ToV3 {
                 rename(node.getAttributes(), port.getValue(), port.getKey());
             }
         } else if (node instanceof Subtree) {
-            subtree(node);
+            subtree(node, replacements);
         } else if (node instanceof Precondition) {
-            precondition(node);
+            precondition(node, replacements);
         }
     }
 
@@ -68,7 +69,7 @@ final class V4ToV3 {
      * With _autoremap (the mark of a v3 SubTreePlus) or a literal port: SubTreePlus, ports as
      * written ({=} spelled out). Otherwise a plain SubTree, whose ports name the parent's keys.
      */
-    private static void subtree(TreeNode node) {
+    private static void subtree(TreeNode node, Map<EObject, EObject> replacements) {
         List<Attribute> attributes = node.getAttributes();
         for (Attribute attribute : attributes) {
             if (attribute.getValue().equals("{=}")) {
@@ -79,7 +80,7 @@ final class V4ToV3 {
                 && !a.getName().equals("_autoremap") && !isRemap(a.getValue()));
         String autoremap = node.attribute("_autoremap");
         if (autoremap != null || literal) {
-            TreeNode plus = become(node, BtPackage.Literals.SUBTREE_PLUS, "SubTreePlus");
+            TreeNode plus = become(node, BtPackage.Literals.SUBTREE_PLUS, "SubTreePlus", replacements);
             if (autoremap != null && V3ToV4.isTrue(autoremap)) {
                 rename(plus.getAttributes(), "_autoremap", "__autoremap");
             } else {
@@ -94,9 +95,9 @@ final class V4ToV3 {
         }
     }
 
-    private static void precondition(TreeNode node) {
+    private static void precondition(TreeNode node, Map<EObject, EObject> replacements) {
         BlackboardChecks.Check check = BlackboardChecks.fromCondition(node.attribute("if"));
-        TreeNode result = become(node, (EClass) BtPackage.eINSTANCE.getEClassifier(check.tag), check.tag);
+        TreeNode result = become(node, (EClass) BtPackage.eINSTANCE.getEClassifier(check.tag), check.tag, replacements);
         List<Attribute> attributes = result.getAttributes();
         Attribute condition = BtAttributes.find(attributes, "if");
         condition.setName("value_A");
