@@ -176,15 +176,6 @@ class BtWeaver {
 		}
 		val originals = <EObject, EObject>newHashMap
 		copier.forEach[original, copied|originals.put(copied, original)]
-		// The converter replaces elements whose class changes (SubTreePlus -> SubTree ...) by new
-		// objects at the same place: remember the places to point the copier at the replacements,
-		// or insertion targets found through it would be detached and their Switch lost.
-		val places = <EObject, String>newHashMap
-		for (copied : originals.keySet) {
-			if (EcoreUtil.isAncestor(copy, copied) && copied !== copy) {
-				places.put(copied, EcoreUtil.getRelativeURIFragmentPath(copy, copied))
-			}
-		}
 		val conversion = BtFormatConverter.convert(copy, format)
 		// Targets are found through the copier: point it at the nodes that replaced converted ones.
 		for (entry : copier.entrySet.toList) {
@@ -196,14 +187,6 @@ class BtWeaver {
 		for (problem : conversion.problems) {
 			val original = originals.get(problem.element) ?: originals.get(copy)
 			errors += new GenerationError(original, '''cannot weave a BehaviorTree.CPP «format» tree: «problem.message»''')
-		}
-		for (entry : places.entrySet) {
-			if (!EcoreUtil.isAncestor(copy, entry.key)) {
-				val replacement = EcoreUtil.getEObject(copy, entry.value)
-				if (replacement !== null) {
-					copier.put(originals.get(entry.key), replacement)
-				}
-			}
 		}
 		// _autoremap="false" only marks a converted SubTreePlus for the way back; a woven tree is not converted back.
 		for (call : copy.eAllContents.filter(SubtreeNode).toList) {

@@ -19,53 +19,47 @@ final class V4Nodes {
         this.enums = enums;
     }
 
+    /** How many children a built-in takes. */
+    private enum Shape { CONTROL, DECORATOR, LEAF }
+
+    /** The built-in version-4 nodes made here, by tag. */
+    private static final Map<String, Shape> BUILTINS = Map.ofEntries(
+            Map.entry("Sequence", Shape.CONTROL), Map.entry("AsyncSequence", Shape.CONTROL),
+            Map.entry("Fallback", Shape.CONTROL), Map.entry("AsyncFallback", Shape.CONTROL),
+            Map.entry("SequenceWithMemory", Shape.CONTROL), Map.entry("SequenceStar", Shape.CONTROL),
+            Map.entry("ReactiveSequence", Shape.CONTROL), Map.entry("ReactiveFallback", Shape.CONTROL),
+            Map.entry("Parallel", Shape.CONTROL), Map.entry("ParallelAll", Shape.CONTROL),
+            Map.entry("Repeat", Shape.DECORATOR), Map.entry("RetryUntilSuccessful", Shape.DECORATOR),
+            Map.entry("RunOnce", Shape.DECORATOR), Map.entry("Precondition", Shape.DECORATOR),
+            Map.entry("LoopInt", Shape.DECORATOR), Map.entry("LoopDouble", Shape.DECORATOR),
+            Map.entry("LoopString", Shape.DECORATOR), Map.entry("LoopBool", Shape.DECORATOR),
+            Map.entry("SkipUnlessUpdated", Shape.DECORATOR), Map.entry("WaitValueUpdate", Shape.DECORATOR),
+            Map.entry("Script", Shape.LEAF), Map.entry("ScriptCondition", Shape.LEAF), Map.entry("Sleep", Shape.LEAF),
+            Map.entry("UnsetBlackboard", Shape.LEAF), Map.entry("WasEntryUpdated", Shape.LEAF));
+
     /** Whether {@code tag} is a built-in version-4 node made here. */
     static boolean isV4Builtin(String tag) {
-        switch (tag) {
-            case "Sequence", "AsyncSequence", "Fallback", "AsyncFallback", "SequenceWithMemory", "SequenceStar",
-                    "ReactiveSequence", "ReactiveFallback", "Parallel", "ParallelAll",
-                    "Repeat", "RetryUntilSuccessful", "RunOnce", "Precondition",
-                    "Script", "ScriptCondition", "Sleep", "UnsetBlackboard",
-                    "LoopInt", "LoopDouble", "LoopString", "LoopBool",
-                    "WasEntryUpdated", "SkipUnlessUpdated", "WaitValueUpdate":
-                return true;
-            default:
-                return false;
-        }
-    }
-
-    /** True for the tags that take exactly one child. */
-    static boolean isDecorator(String tag) {
-        switch (tag) {
-            case "Repeat", "RetryUntilSuccessful", "RunOnce", "Precondition", "LoopInt", "LoopDouble", "LoopString", "LoopBool",
-                    "SkipUnlessUpdated", "WaitValueUpdate":
-                return true;
-            default:
-                return false;
-        }
-    }
-
-    /** True for the leaves (no children). */
-    static boolean isLeaf(String tag) {
-        switch (tag) {
-            case "Script", "ScriptCondition", "Sleep", "UnsetBlackboard", "WasEntryUpdated":
-                return true;
-            default:
-                return false;
-        }
+        return BUILTINS.containsKey(tag);
     }
 
     /** The node for a built-in version-4 tag, with its already built children. */
     Node create(String tag, NodeInfo info, List<Node> children) {
         String where = info.path();
-        if (isLeaf(tag) && !children.isEmpty()) {
-            throw new BtBuildException(where + ": " + tag + " takes no children");
-        }
-        if (isDecorator(tag) && children.size() != 1) {
-            throw new BtBuildException(where + ": a decorator has exactly one child, " + tag + " has " + children.size());
-        }
-        if (!isLeaf(tag) && !isDecorator(tag) && children.isEmpty()) {
-            throw new BtBuildException(where + ": a control node needs at least one child");
+        switch (BUILTINS.get(tag)) {
+            case LEAF:
+                if (!children.isEmpty()) {
+                    throw new BtBuildException(where + ": " + tag + " takes no children");
+                }
+                break;
+            case DECORATOR:
+                if (children.size() != 1) {
+                    throw new BtBuildException(where + ": a decorator has exactly one child, " + tag + " has " + children.size());
+                }
+                break;
+            default:
+                if (children.isEmpty()) {
+                    throw new BtBuildException(where + ": a control node needs at least one child");
+                }
         }
         Node child = children.isEmpty() ? null : children.get(0);
         switch (tag) {
