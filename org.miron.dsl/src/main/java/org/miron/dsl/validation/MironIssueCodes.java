@@ -43,6 +43,8 @@ public final class MironIssueCodes {
     public static final String XPATH_NOT_ATTRIBUTE = "miron.xpath-not-attribute";
     /** A before/after insertion or a behavior tree varpoint whose XPath selects something that is not a node. */
     public static final String XPATH_NOT_TREE_NODE = "miron.xpath-not-tree-node";
+    /** The nominal BT file (none imported names a main tree) holds several trees and no main_tree_to_execute. */
+    public static final String NOMINAL_TREE_WITHOUT_MAIN = "miron.nominal-tree-without-main";
     /** Two varpoints bound 'in' the same node or port. */
     public static final String SHARED_TARGET = "miron.shared-target";
 

@@ -40,4 +40,33 @@ public class MironValidator extends AbstractMironValidator {
             }
         }
     }
+
+    /**
+     * The nominal tree is the imported BT file that names its main tree, else the first one
+     * (as the weaver chooses). A file of several trees without main_tree_to_execute is a fine
+     * include library by itself, but as the nominal tree it leaves the main tree unknown.
+     */
+    @Check
+    public void checkNominalTreeHasAMainTree(RoqmeModel model) {
+        Import first = null;
+        for (Import imp : model.getImports()) {
+            org.eclipse.emf.ecore.resource.Resource resource = Imports.load(imp);
+            if (resource != null && !resource.getContents().isEmpty()
+                    && resource.getContents().get(0) instanceof org.miron.bt.bt.BTModel bt) {
+                if (bt.getMain_tree_to_execute() != null) {
+                    return;
+                }
+                if (first == null) {
+                    first = imp;
+                }
+            }
+        }
+        org.miron.bt.bt.BTModel nominal = first == null ? null
+                : (org.miron.bt.bt.BTModel) Imports.load(first).getContents().get(0);
+        if (nominal != null && nominal.getTrees().size() > 1) {
+            error(first.getImportURI() + " holds " + nominal.getTrees().size() + " trees and no main_tree_to_execute: "
+                    + "the woven tree needs to know which one is the main tree (set main_tree_to_execute there)",
+                    first, null, NOMINAL_TREE_WITHOUT_MAIN);
+        }
+    }
 }

@@ -69,4 +69,14 @@ public class CrossFileTest {
         assertEquals(List.of("uses_unnamed_tree.miron:4:26: error: unknown behavior tree 't.Main' (the BehaviorTree "
                 + "without ID in unnamed_tree.bt cannot be referenced: give it an ID there)"), errors);
     }
+
+    /** Issue 17: a library of several trees is valid alone, but not as the .miron's nominal tree. */
+    @Test
+    public void aLibraryOfTreesCannotBeTheNominalTree() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_library.miron"));
+        List<String> errors = Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .map(Models::format).collect(Collectors.toList());
+        assertEquals(List.of("uses_library.miron:2:1: error: library.bt holds 2 trees and no main_tree_to_execute: "
+                + "the woven tree needs to know which one is the main tree (set main_tree_to_execute there)"), errors);
+    }
 }
