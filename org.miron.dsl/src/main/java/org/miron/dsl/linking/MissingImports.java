@@ -17,6 +17,7 @@ import org.eclipse.xtext.naming.QualifiedName;
 import org.eclipse.xtext.resource.IEObjectDescription;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceSet;
+import org.miron.bt.resource.BtXmlFiles;
 import org.miron.dsl.roqme.Import;
 import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.util.Imports;
@@ -121,12 +122,13 @@ public class MissingImports {
         if (files == null) {
             return List.of();
         }
-        Set<String> importable = miron ? Set.of("bt", "roqme", "miron") : Set.of("roqme");
+        Set<String> importable = miron ? Set.of("bt", "xml", "roqme", "miron") : Set.of("roqme");
         List<File> result = new ArrayList<>();
         for (File f : files) {
             String name = f.getName();
             String extension = name.substring(name.lastIndexOf('.') + 1);
-            if (f.isFile() && importable.contains(extension) && !f.equals(self)) {
+            if (f.isFile() && importable.contains(extension) && !f.equals(self)
+                    && (!extension.equals("xml") || BtXmlFiles.looksLikeBehaviourTree(URI.createFileURI(f.getPath())))) {
                 result.add(f);
             }
         }

@@ -26,7 +26,8 @@ public class MironValidator extends AbstractMironValidator {
 
     @Override
     protected List<String> allowedImports() {
-        return List.of("bt", "roqme", "miron");
+        // BehaviorTree.CPP's own trees are .xml files (root element <root>), loaded by the BT language.
+        return List.of("bt", "xml", "roqme", "miron");
     }
 
     @Check

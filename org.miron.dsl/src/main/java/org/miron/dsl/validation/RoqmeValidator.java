@@ -13,6 +13,7 @@ import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.INode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.validation.Check;
+import org.miron.bt.resource.BtXmlFiles;
 import org.eclipse.xtext.validation.ComposedChecks;
 import org.miron.dsl.roqme.BeliefVariable;
 import org.miron.dsl.roqme.Context;
@@ -98,6 +99,9 @@ public class RoqmeValidator extends AbstractRoqmeValidator {
                     allowedImports().toArray(new String[0]));
         } else if (Imports.uriOf(imp) != null && Imports.uriOf(imp).equals(imp.eResource().getURI())) {
             error("a file cannot import itself", imp, R.getImport_ImportURI(), SELF_IMPORT);
+        } else if ("xml".equals(extension) && !BtXmlFiles.looksLikeBehaviourTree(Imports.uriOf(imp))) {
+            error("cannot import '" + imp.getImportURI() + "': it is not a BehaviorTree.CPP tree (its root element is not <root>)",
+                    imp, R.getImport_ImportURI(), IMPORT_NOT_ALLOWED, allowedImports().toArray(new String[0]));
         } else if (importedResources.description(imp) == null) {
             error("cannot find imported file '" + imp.getImportURI() + "' (paths are relative to this file)",
                     imp, R.getImport_ImportURI(), IMPORT_NOT_FOUND);

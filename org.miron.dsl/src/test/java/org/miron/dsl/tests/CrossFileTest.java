@@ -79,4 +79,24 @@ public class CrossFileTest {
         assertEquals(List.of("uses_library.miron:2:1: error: library.bt holds 2 trees and no main_tree_to_execute: "
                 + "the woven tree needs to know which one is the main tree (set main_tree_to_execute there)"), errors);
     }
+    /** Issue 17: BehaviorTree.CPP's own .xml trees are imported like .bt files, their includes too. */
+    @Test
+    public void xmlTreesAreImportedLikeBtFiles() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_xml_tree.miron"));
+        List<String> issues = Models.validateAll(resource).stream().map(Models::format).collect(Collectors.toList());
+        assertEquals(List.of(), issues);
+        List<String> loaded = resource.getResourceSet().getResources().stream().map(r -> r.getURI().lastSegment())
+                .sorted().collect(Collectors.toList());
+        assertEquals(List.of("bt_subtrees.xml", "bt_tree.xml", "uses_xml_tree.miron"), loaded);
+    }
+
+    /** An .xml that is not a BehaviorTree.CPP tree is refused with the reason, not "cannot find". */
+    @Test
+    public void anXmlFileThatIsNotATreeCannotBeImported() {
+        Resource resource = Models.load(new File("src/test/resources/models/crossfile/uses_not_a_tree.miron"));
+        List<String> errors = Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .map(Models::format).collect(Collectors.toList());
+        assertEquals(List.of("uses_not_a_tree.miron:1:8: error: cannot import 'not_a_tree.xml': it is not a "
+                + "BehaviorTree.CPP tree (its root element is not <root>)"), errors);
+    }
 }
