@@ -102,6 +102,9 @@ public final class RequestSender implements AutoCloseable {
 
     private void loop() {
         ZMQ.Socket socket = connect();
+        // One poller per socket, not per request: opening and closing a selector for every query
+        // cost milliseconds on the change-parameter path.
+        ZMQ.Poller poller = poller(socket);
         LinkMonitor link = new LinkMonitor(ctx, socket);
         Connect.connect(socket, endpoint);
         long backoff = backoffMinMs;
@@ -119,15 +122,17 @@ public final class RequestSender implements AutoCloseable {
                 socket.sendMore(new byte[0]);
                 socket.send(Json.write(message));
                 listener.sent(e.getKey(), message);
-                if (awaitAck(socket)) {
+                if (awaitAck(socket, poller)) {
                     done(e.getKey(), e.getValue());
                     listener.acked(e.getKey(), message);
                     backoff = backoffMinMs;
                     attempt = 0;
                 } else {
                     link.close();
+                    poller.close();
                     socket.close(); // drops a late reply with the socket
                     socket = connect(); // connects during the back-off
+                    poller = poller(socket);
                     link = new LinkMonitor(ctx, socket);
                     Connect.connect(socket, endpoint);
                     attempt++;
@@ -144,6 +149,7 @@ public final class RequestSender implements AutoCloseable {
             }
         } finally {
             link.close();
+            poller.close();
             ctx.close();
         }
     }
@@ -155,21 +161,24 @@ public final class RequestSender implements AutoCloseable {
     }
 
     /** Reads the reply envelope: empty delimiter then the (empty) ack frame. */
-    private boolean awaitAck(ZMQ.Socket socket) {
-        try (ZMQ.Poller poller = ctx.createPoller(1)) {
-            poller.register(socket, ZMQ.Poller.POLLIN);
-            long end = System.currentTimeMillis() + ackTimeoutMs;
-            long left;
-            while (running && (left = end - System.currentTimeMillis()) > 0) {
-                poller.poll(Math.min(left, 50));
-                // One request in flight per socket, so any reply is the ack of this query. The
-                // poll only paces the wait; the non-blocking read decides.
-                if (ZMsg.recvMsg(socket, false) != null) {
-                    return true;
-                }
+    private boolean awaitAck(ZMQ.Socket socket, ZMQ.Poller poller) {
+        long end = System.currentTimeMillis() + ackTimeoutMs;
+        long left;
+        while (running && (left = end - System.currentTimeMillis()) > 0) {
+            poller.poll(Math.min(left, 50));
+            // One request in flight per socket, so any reply is the ack of this query. The
+            // poll only paces the wait; the non-blocking read decides.
+            if (ZMsg.recvMsg(socket, false) != null) {
+                return true;
             }
-            return false;
         }
+        return false;
+    }
+
+    private ZMQ.Poller poller(ZMQ.Socket socket) {
+        ZMQ.Poller p = ctx.createPoller(1);
+        p.register(socket, ZMQ.Poller.POLLIN);
+        return p;
     }
 
     @Override

@@ -9,26 +9,20 @@ import org.miron.runtime.engine.VarPoint;
 
 /**
  * Random engine inputs for a model: metrics (often on the 0.1 grid the rules compare with, to hit
- * the boundaries), contexts known or unknown, overrides, current values.
+ * the boundaries, sometimes tiny), contexts known or unknown (sometimes tiny or huge numbers: Java
+ * prints them with an exponent, the parameter file must not), overrides, current values.
  */
 final class RandomInputs {
     private RandomInputs() {
-    }
-
-    /**
-     * Below 1e-3 Java writes doubles as 1.2E-4, which MiniZinc's --cmdline-json-data parser refuses
-     * ("unexpected token `E'"): a MiniZincBackend limitation (its parameter passing is being
-     * replaced by a data file), not a difference between the backends, so such values are avoided.
-     */
-    private static double plain(double x) {
-        return Math.abs(x) < 1e-3 ? 0 : x;
     }
 
     static Map<String, Object> generate(IoModel io, Random random) {
         Map<String, Object> params = new LinkedHashMap<>();
         for (InputSpec in : io.inputs()) {
             if (in.isMetric()) {
-                params.put(in.param(), random.nextBoolean() ? random.nextInt(11) / 10.0 : plain(random.nextDouble()));
+                int pick = random.nextInt(10); // on the 0.1 grid, anywhere, or tiny (printed 1.2E-7 by Java)
+                params.put(in.param(), pick < 5 ? random.nextInt(11) / 10.0 : pick < 9 ? random.nextDouble()
+                        : random.nextDouble() * 1e-6);
                 continue;
             }
             boolean known = random.nextInt(4) > 0;
@@ -36,8 +30,11 @@ final class RandomInputs {
             Object value = switch (in.type()) {
                 case "bool" -> known && random.nextBoolean();
                 case "int" -> known ? random.nextInt(in.literals().size()) : 0;
-                default -> known ? (random.nextBoolean() ? random.nextInt(41) / 4.0 - 5 : plain(random.nextDouble() * 15 - 5))
-                        : 0.0;
+                default -> !known ? 0.0 : switch (random.nextInt(10)) {
+                    case 0 -> (random.nextDouble() - 0.5) * 1e-6; // tiny
+                    case 1 -> (random.nextDouble() - 0.5) * 1e12; // huge
+                    default -> random.nextBoolean() ? random.nextInt(41) / 4.0 - 5 : random.nextDouble() * 15 - 5;
+                };
             };
             params.put(in.param(), value);
         }
