@@ -56,6 +56,10 @@ public class DemoCommand implements Callable<Integer> {
             description = "weave and run the behaviour tree as BehaviorTree.CPP 3 or 4 (default: the version of the model's tree)")
     Integer btFormat;
 
+    @Option(names = "--backend", paramLabel = "NAME",
+            description = "the engine's solver: native (in process, the default), minizinc (the reference) or both")
+    String backend;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -114,7 +118,7 @@ public class DemoCommand implements Callable<Integer> {
         Demo.Result result;
         try {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
-                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).run();
+                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());
         }

@@ -38,14 +38,30 @@ public class DemoCommandTest {
     @Test
     public void theRobotDocksWhenTheBatteryRunsLowAndSlowsDownWhenSafetyDrops() throws Exception {
         String told = runDemo(3);
-        assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 3."));
+        assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 3; the engine decides "
+                + "with the native backend."));
     }
 
-    /** The same demo with the tree woven for BehaviorTree.CPP 4 and run with its semantics. */
+    /**
+     * The same demo with the tree woven for BehaviorTree.CPP 4 and run with its semantics, and the
+     * engine deciding with the reference backend (MiniZinc) instead of the default native one.
+     */
     @Test
-    public void theDemoRunsTheSameOnTheVersion4Tree() throws Exception {
-        String told = runDemo(4, "--bt-format", "4");
-        assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 4."));
+    public void theDemoRunsTheSameOnTheVersion4TreeAndWithMiniZinc() throws Exception {
+        String told = runDemo(4, "--bt-format", "4", "--backend", "minizinc");
+        assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 4; the engine decides "
+                + "with the minizinc backend."));
+    }
+
+    @Test
+    public void anUnknownBackendIsAUsageErrorNamingTheBackends() {
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setOut(new PrintWriter(new StringWriter(), true));
+        cli.setErr(new PrintWriter(err, true));
+        assertEquals(2, cli.execute("demo", "--backend", "gurobi", "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("gurobi") && err.toString().contains("native")
+                && err.toString().contains("minizinc"));
     }
 
     private String runDemo(int version, String... options) throws Exception {

@@ -36,6 +36,7 @@ public final class Demo {
     private final Endpoints endpoints;
     private final PrintWriter out;
     private double timeScale = 1.0;
+    private String backend;
     private long settleMs = 1500;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
@@ -55,10 +56,17 @@ public final class Demo {
         return this;
     }
 
+    /** The engine's backend by name (null: the engine's default). */
+    public Demo backend(String name) {
+        this.backend = name;
+        return this;
+    }
+
     public Result run() throws EngineStartException, InterruptedException, java.io.IOException {
         Path decisionLog = outDir.resolve("decisions.jsonl");
         EngineOptions options = new EngineOptions(ioJson).endpoints(endpoints);
         options.decisionLog = decisionLog;
+        options.backend = backend;
         AtomicInteger missions = new AtomicInteger();
         AtomicBoolean scenarioOver = new AtomicBoolean();
         try (Broker broker = new Broker(endpoints).start();
@@ -72,7 +80,8 @@ public final class Demo {
                     ScenarioPlayer player = new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
                 narrator.setClock(recorder);
                 out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
-                        + executor.tree().formatVersion() + ".");
+                        + executor.tree().formatVersion() + "; the engine decides with the " + engine.backendName()
+                        + " backend.");
                 engine.start();
                 Thread robot = new Thread(() -> {
                     while (!scenarioOver.get()) {

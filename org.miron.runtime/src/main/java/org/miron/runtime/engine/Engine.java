@@ -48,6 +48,11 @@ public final class Engine implements AutoCloseable {
         this.status = new EngineStatus(model.model(), backend.name());
     }
 
+    /** The name of the backend that decides (native, minizinc, both). */
+    public String backendName() {
+        return backend.name();
+    }
+
     /** Loads the io.json and builds the backend named in the options. */
     public static Engine create(EngineOptions options) throws EngineStartException {
         IoModel model;

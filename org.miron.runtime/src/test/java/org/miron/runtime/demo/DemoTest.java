@@ -63,7 +63,7 @@ public class DemoTest {
         Demo.Result result = demo.run();
 
         String told = console.toString();
-        assertTrue(told, told.contains(tree.getFileName() + " runs as BehaviorTree.CPP " + version + "."));
+        assertTrue(told, told.contains(tree.getFileName() + " runs as BehaviorTree.CPP " + version + ";"));
         assertTrue(told, told.contains("RoQME   power_autonomy = 0.2"));
         assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch)"));
         assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge"));
