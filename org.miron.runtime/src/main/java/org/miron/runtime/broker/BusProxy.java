@@ -7,6 +7,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
+import org.miron.runtime.SocketWait;
 import org.miron.runtime.bus.Topics;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
@@ -88,16 +89,19 @@ final class BusProxy implements Runnable {
 
     @Override
     public void run() {
-        try (ZMQ.Poller poller = ctx.createPoller(2)) {
-            poller.register(xsub, ZMQ.Poller.POLLIN);
-            poller.register(xpub, ZMQ.Poller.POLLIN);
+        try (SocketWait poller = new SocketWait().add(xsub).add(xpub)) {
             while (running && !Thread.currentThread().isInterrupted()) {
-                poller.poll(50);
+                boolean ready = poller.await(50);
+                boolean idle = true;
                 // The poll only paces the loop; non-blocking reads decide. A wake-up the poller
                 // misses then costs at most one poll interval, never a stuck message.
                 boolean busy = true;
                 while (busy && running) {
                     busy = forward() | subscription();
+                    idle &= !busy;
+                }
+                if (ready && idle) {
+                    poller.idle(); // a wake-up with nothing to do: see SocketWait
                 }
             }
         } catch (RuntimeException e) {

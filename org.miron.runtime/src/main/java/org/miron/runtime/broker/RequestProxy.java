@@ -2,6 +2,7 @@ package org.miron.runtime.broker;
 
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
+import org.miron.runtime.SocketWait;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -49,16 +50,19 @@ final class RequestProxy implements Runnable {
 
     @Override
     public void run() {
-        try (ZMQ.Poller poller = ctx.createPoller(2)) {
-            poller.register(frontend, ZMQ.Poller.POLLIN);
-            poller.register(backend, ZMQ.Poller.POLLIN);
+        try (SocketWait poller = new SocketWait().add(frontend).add(backend)) {
             while (running && !Thread.currentThread().isInterrupted()) {
-                poller.poll(50);
+                boolean ready = poller.await(50);
+                boolean idle = true;
                 // The poll only paces the loop; non-blocking reads decide (robust to missed wake-ups).
                 boolean busy = true;
                 while (busy && running) {
                     busy = relay(frontend, backend, "skill interface not connected")
                             | relay(backend, frontend, "client gone");
+                    idle &= !busy;
+                }
+                if (ready && idle) {
+                    poller.idle(); // a wake-up with nothing to do: see SocketWait
                 }
             }
         } catch (RuntimeException e) {

@@ -13,6 +13,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
 import org.miron.runtime.Json;
+import org.miron.runtime.SocketWait;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -172,25 +173,38 @@ public final class BusClient implements AutoCloseable {
                 in.subscribe(Topics.BROKER_PREFIX.getBytes(StandardCharsets.UTF_8));
             }
         }
-        try (ZMQ.Poller poller = ctx.createPoller(2)) {
-            poller.register(out, ZMQ.Poller.POLLIN);
+        try (SocketWait poller = new SocketWait()) {
+            poller.add(out);
             if (in != null) {
-                poller.register(in, ZMQ.Poller.POLLIN);
+                poller.add(in);
             }
-            poller.register(wakeup.channel(), ZMQ.Poller.POLLIN);
+            poller.add(wakeup.channel());
             while (running) {
-                poller.poll(pollMs);
-                wakeup.clear(); // before reading the queue: a later publish wakes the next poll
+                boolean ready = poller.await(pollMs);
+                boolean woken = wakeup.clear(); // before reading the queue: a later publish wakes the next poll
                 // The poll only paces the loop; non-blocking reads decide (robust to missed wake-ups).
-                byte[] sub;
-                while ((sub = out.recv(ZMQ.DONTWAIT)) != null) {
-                    upstream(sub);
-                }
-                if (in != null) {
-                    receive(in);
-                }
-                if (upstream) {
-                    drain(out);
+                // Round again after any work: a send or subscribe may consume the notification of
+                // a message that then sits in a socket whose FD is no longer readable; the FD
+                // only signals again once a read has found the socket empty (see SocketWait).
+                int work = 0;
+                int round;
+                do {
+                    round = 0;
+                    byte[] sub;
+                    while ((sub = out.recv(ZMQ.DONTWAIT)) != null) {
+                        upstream(sub);
+                        round++;
+                    }
+                    if (in != null) {
+                        round += receive(in);
+                    }
+                    if (upstream) {
+                        round += drain(out);
+                    }
+                    work += round;
+                } while (round > 0 && running);
+                if (ready && !woken && work == 0) {
+                    poller.idle(); // a wake-up with nothing to do: see SocketWait
                 }
             }
         } catch (RuntimeException e) {
@@ -269,9 +283,12 @@ public final class BusClient implements AutoCloseable {
         }
     }
 
-    private void receive(ZMQ.Socket in) {
+    /** Hands every waiting message to the handler; returns how many there were. */
+    private int receive(ZMQ.Socket in) {
+        int n = 0;
         byte[] topic = in.recv(ZMQ.DONTWAIT);
         while (topic != null) {
+            n++;
             byte[] body = in.hasReceiveMore() ? in.recv() : new byte[0];
             while (in.hasReceiveMore()) {
                 in.recv(); // extra frames are not part of the protocol
@@ -286,19 +303,24 @@ public final class BusClient implements AutoCloseable {
             }
             topic = in.recv(ZMQ.DONTWAIT);
         }
+        return n;
     }
 
-    private void drain(ZMQ.Socket out) {
+    /** Sends the queued messages; returns how many. */
+    private int drain(ZMQ.Socket out) {
+        int n = 0;
         String[] msg;
         sending = true;
         try {
             while ((msg = outbox.poll()) != null) {
                 out.sendMore(msg[0]);
                 out.send(msg[1]);
+                n++;
             }
         } finally {
             sending = false;
         }
+        return n;
     }
 
     @Override

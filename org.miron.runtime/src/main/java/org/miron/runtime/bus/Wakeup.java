@@ -49,19 +49,25 @@ final class Wakeup implements AutoCloseable {
     }
 
     /**
-     * Loop thread, before it looks at its queue: consumes the signal. A signal raised after this
-     * call wakes the next poll, so nothing queued afterwards waits for a timeout.
+     * Loop thread, before it looks at its queue: consumes the signal; true if there was one. A
+     * signal raised after this call wakes the next poll, so nothing queued afterwards waits for a
+     * timeout. The pipe is emptied before {@code pending} is reset, not after: a signal that
+     * slipped in between would otherwise have its byte read here while leaving {@code pending}
+     * set, and every later {@link #signal} would skip the write until the poll timed out.
      */
-    void clear() {
-        pending.set(false);
+    boolean clear() {
+        boolean signalled = false;
         try {
             sink.clear();
             while (pipe.source().read(sink) > 0) {
+                signalled = true;
                 sink.clear();
             }
         } catch (IOException ignored) {
             // closed: the loop is ending
         }
+        pending.set(false);
+        return signalled;
     }
 
     @Override

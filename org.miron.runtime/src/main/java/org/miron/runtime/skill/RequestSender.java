@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
 import org.miron.runtime.Json;
+import org.miron.runtime.SocketWait;
 import org.miron.runtime.LinkMonitor;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
@@ -104,7 +105,7 @@ public final class RequestSender implements AutoCloseable {
         ZMQ.Socket socket = connect();
         // One poller per socket, not per request: opening and closing a selector for every query
         // cost milliseconds on the change-parameter path.
-        ZMQ.Poller poller = poller(socket);
+        SocketWait poller = poller(socket);
         LinkMonitor link = new LinkMonitor(ctx, socket);
         Connect.connect(socket, endpoint);
         long backoff = backoffMinMs;
@@ -161,24 +162,27 @@ public final class RequestSender implements AutoCloseable {
     }
 
     /** Reads the reply envelope: empty delimiter then the (empty) ack frame. */
-    private boolean awaitAck(ZMQ.Socket socket, ZMQ.Poller poller) {
+    private boolean awaitAck(ZMQ.Socket socket, SocketWait poller) {
         long end = System.currentTimeMillis() + ackTimeoutMs;
         long left;
+        boolean ready = false;
         while (running && (left = end - System.currentTimeMillis()) > 0) {
-            poller.poll(Math.min(left, 50));
-            // One request in flight per socket, so any reply is the ack of this query. The
-            // poll only paces the wait; the non-blocking read decides.
+            // Read before waiting: the socket's FD signals a new reply only once a read has found
+            // it empty (see SocketWait). One request in flight per socket, so any reply is the ack
+            // of this query.
             if (ZMsg.recvMsg(socket, false) != null) {
                 return true;
             }
+            if (ready) {
+                poller.idle(); // the last wake-up had nothing to read: see SocketWait
+            }
+            ready = poller.await(Math.min(left, 50));
         }
         return false;
     }
 
-    private ZMQ.Poller poller(ZMQ.Socket socket) {
-        ZMQ.Poller p = ctx.createPoller(1);
-        p.register(socket, ZMQ.Poller.POLLIN);
-        return p;
+    private SocketWait poller(ZMQ.Socket socket) {
+        return new SocketWait().add(socket);
     }
 
     @Override

@@ -14,6 +14,7 @@ import java.util.Optional;
 import java.util.function.Predicate;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
+import org.miron.runtime.SocketWait;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -73,12 +74,13 @@ public final class SkillInterfaceMock implements AutoCloseable {
     }
 
     private void loop() {
-        try (ZMQ.Poller poller = ctx.createPoller(1)) {
-            poller.register(rep, ZMQ.Poller.POLLIN);
+        try (SocketWait poller = new SocketWait().add(rep)) {
             while (active) {
-                poller.poll(nextTimeout());
+                boolean ready = poller.await(nextTimeout());
+                boolean idle = true;
                 byte[] request; // the poll only paces the loop; non-blocking reads decide
                 while (active && (request = rep.recv(ZMQ.DONTWAIT)) != null) {
+                    idle = false;
                     while (rep.hasReceiveMore()) {
                         rep.recv(); // REP strips the envelope; extra body frames are not expected
                     }
@@ -86,6 +88,9 @@ public final class SkillInterfaceMock implements AutoCloseable {
                     rep.send(new byte[0]); // ack
                 }
                 finishDue(System.currentTimeMillis());
+                if (ready && idle) {
+                    poller.idle(); // a wake-up with nothing to read: see SocketWait
+                }
             }
         } catch (RuntimeException e) {
             if (active) {
