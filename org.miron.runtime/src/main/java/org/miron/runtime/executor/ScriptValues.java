@@ -36,12 +36,9 @@ public final class ScriptValues {
 
     /** A number as a double; text that reads as a number too (BT.CPP's cast&lt;double&gt;). */
     public static double toDouble(Object value) {
-        if (value instanceof Number n) {
-            return n.doubleValue();
-        }
         try {
-            return Double.parseDouble(String.valueOf(value).trim());
-        } catch (NumberFormatException e) {
+            return Conversions.toDouble(value);
+        } catch (IllegalArgumentException e) {
             throw new ScriptException("'" + value + "' is not a number");
         }
     }
