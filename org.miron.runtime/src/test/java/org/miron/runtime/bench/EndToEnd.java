@@ -37,17 +37,19 @@ final class EndToEnd {
     }
 
     /**
+     * @param warm   rounds run first and reported apart: until the JIT has compiled the bus, broker
+     *               and engine paths, a round costs several times the steady state's
      * @param cached answer repeated inputs from a cache instead of the solver: what is left is the
      *               time of the bus, broker and engine alone
      */
-    static void run(String backend, Path ioJson, int rounds, boolean cached) throws Exception {
+    static void run(String backend, Path ioJson, int warm, int rounds, boolean cached) throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         IoModel io = IoModel.load(ioJson);
         EngineOptions o = new EngineOptions(ioJson).endpoints(ep);
         o.backend = backend;
         o.timeLimitMs = 0;
         BlockingQueue<String[]> variants = new LinkedBlockingQueue<>();
-        long[] solveNanos = new long[4 * rounds + 16];
+        long[] solveNanos = new long[4 * (warm + rounds) + 16];
         long[] solveStart = new long[solveNanos.length]; // System.nanoTime() at each solve's start and end
         long[] solveEnd = new long[solveNanos.length];
         int[] solves = { 0 };
@@ -65,11 +67,13 @@ final class EndToEnd {
             Thread.sleep(1000); // every subscription is live
             variants.clear();
 
+            long[] cold = new long[warm];
             long[] variant = new long[rounds];
             long[] variantOverhead = new long[rounds];
             long[] inbound = new long[rounds]; // input published → its solve starts
             long[] outbound = new long[rounds]; // the last solve of the round ends → variant received
-            for (int i = 0; i < rounds; i++) {
+            for (int k = -warm; k < rounds; k++) {
+                int i = k + warm; // the input alternates over all rounds, warm-up included
                 int first = solves[0];
                 String expect = i % 2 == 0 ? "dock" : "pickDeliverCharge";
                 long t0 = System.nanoTime();
@@ -79,6 +83,11 @@ final class EndToEnd {
                     throw new IllegalStateException("unexpected variant " + got[1]);
                 }
                 long received = Long.parseLong(got[2]);
+                if (k < 0) {
+                    cold[i] = received - t0;
+                    continue;
+                }
+                i = k;
                 variant[i] = received - t0;
                 variantOverhead[i] = variant[i] - solveTime(solveNanos, first, solves[0]);
                 synchronized (solveNanos) {
@@ -90,7 +99,8 @@ final class EndToEnd {
             int solvesBefore = solves[0];
             long[] param = new long[rounds];
             long[] paramOverhead = new long[rounds];
-            for (int i = 0; i < rounds; i++) {
+            for (int k = -warm; k < rounds; k++) {
+                int i = k + warm;
                 int first = solves[0];
                 // The newest query id so far; the wait tests each change once (a predicate copying the
                 // history on every test made this path quadratic: ≈ 4 ms of the bench's own).
@@ -99,16 +109,27 @@ final class EndToEnd {
                 estimate(input, "safety", i % 2 == 0 ? 0.35 : 0.95);
                 ParameterChange c = skills.awaitChange(x -> x.id() > lastId, TIMEOUT_MS)
                         .orElseThrow(() -> new IllegalStateException("no change-parameter"));
+                if (k < 0) {
+                    continue;
+                }
+                i = k;
                 param[i] = System.nanoTime() - t0;
                 paramOverhead[i] = param[i] - solveTime(solveNanos, first, solves[0]);
                 if (c == null) {
                     throw new IllegalStateException();
                 }
             }
+            if (Boolean.getBoolean("bench.slow")) { // -Pslow: which rounds were slow, who used the CPU
+                slowRounds("variant", variant);
+                slowRounds("change-parameter", param);
+                threadCpu();
+            }
             long[] solver = java.util.Arrays.copyOf(solveNanos, Math.min(solves[0], solveNanos.length));
             if (cached) {
                 backend += " (cached)";
             }
+            System.out.printf("%-60s %-9s %s%n", "input -> variant, warm-up rounds first (" + warm + ")", backend,
+                    new Stats(cold).p50p99());
             System.out.printf("%-60s %-9s %s%n", "input -> variant (" + rounds + ")", backend, new Stats(variant).p50p99());
             System.out.printf("%-60s %-9s %s%n", "input -> change-parameter (" + rounds + ")", backend, new Stats(param).p50p99());
             System.out.printf("%-60s %-9s %s%n", "  overhead: input -> variant minus that round's solve", backend,
@@ -123,6 +144,32 @@ final class EndToEnd {
                     backend, new Stats(solver).p50p99());
             if (solves[0] - solvesBefore < rounds) {
                 System.out.println("  (note: fewer solves than inputs in the parameter run: " + (solves[0] - solvesBefore) + ")");
+            }
+        }
+    }
+
+    /** How many rounds took over 1, 2, 4 and 8 ms: a tail of whole scheduler ticks (4 ms) shows up here. */
+    private static void slowRounds(String path, long[] nanos) {
+        int[] over = new int[4];
+        for (long n : nanos) {
+            for (int b = 0; b < over.length; b++) {
+                if (n > (1_000_000L << b)) {
+                    over[b]++;
+                }
+            }
+        }
+        System.out.printf("  %s rounds over 1 / 2 / 4 / 8 ms: %d / %d / %d / %d of %d%n", path, over[0], over[1], over[2],
+                over[3], nanos.length);
+    }
+
+    /** CPU time of every live thread of the bench's JVM (the components' bus and JeroMQ I/O threads). */
+    private static void threadCpu() {
+        java.lang.management.ThreadMXBean tm = java.lang.management.ManagementFactory.getThreadMXBean();
+        for (long id : tm.getAllThreadIds()) {
+            java.lang.management.ThreadInfo ti = tm.getThreadInfo(id);
+            long cpu = tm.getThreadCpuTime(id);
+            if (ti != null && cpu > 1_000_000) {
+                System.out.printf("  thread %-30s cpu %8.1f ms%n", ti.getThreadName(), cpu / 1e6);
             }
         }
     }
