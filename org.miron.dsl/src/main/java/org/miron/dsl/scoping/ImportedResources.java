@@ -11,6 +11,7 @@ import org.eclipse.xtext.resource.IResourceDescriptions;
 import org.eclipse.xtext.resource.IResourceDescriptionsProvider;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.scoping.impl.LoadOnDemandResourceDescriptions;
+import org.eclipse.xtext.util.IResourceScopeCache;
 import org.miron.dsl.roqme.Import;
 import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.util.Imports;
@@ -38,6 +39,9 @@ public class ImportedResources {
     @Inject
     private IResourceServiceProvider.Registry languages;
 
+    @Inject
+    private IResourceScopeCache cache;
+
     /** The imports of a resource whose file can be found, in import order. */
     public List<Resolved> of(Resource resource) {
         List<Resolved> result = new ArrayList<>();
@@ -46,7 +50,7 @@ public class ImportedResources {
             return result;
         }
         IResourceDescriptions index = indexProvider.getResourceDescriptions(resource.getResourceSet());
-        for (Import imp : ((RoqmeModel) resource.getContents().get(0)).getImports()) {
+        for (Import imp : imports(resource)) {
             URI uri = Imports.uriOf(imp);
             IResourceDescription description = describe(index, resource, uri);
             if (description != null) {
@@ -54,6 +58,17 @@ public class ImportedResources {
             }
         }
         return result;
+    }
+
+    /**
+     * The model's imports, kept until the resource changes: every global scope asks for them, and
+     * the derived {@code getImports()} walks all sentences (quadratic on a 5 000-sentence model).
+     * Only what the resource itself says is cached; the imported files' descriptions are read from
+     * the index on every call, so that a changed import is seen at once.
+     */
+    private List<Import> imports(Resource resource) {
+        return cache.get(ImportedResources.class, resource,
+                () -> ((RoqmeModel) resource.getContents().get(0)).getImports());
     }
 
     /** The description of the imported file, or null when it cannot be found or read. */

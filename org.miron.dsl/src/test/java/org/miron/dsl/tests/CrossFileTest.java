@@ -42,6 +42,33 @@ public class CrossFileTest {
         assertEquals(List.of(), own);
     }
 
+    /**
+     * The imports a file's scopes see are cached until the file changes: an edit in place (as an
+     * editor makes it) to the import's alias must re-link against the new alias at once.
+     */
+    @Test
+    public void editingAnImportInPlaceRelinksAgainstIt() throws Exception {
+        org.eclipse.xtext.resource.XtextResource resource = (org.eclipse.xtext.resource.XtextResource) Models
+                .load(new File("src/test/resources/models/crossfile/uses_broken.miron"));
+        assertEquals(List.of(), ownErrors(resource));
+        String text = resource.getParseResult().getRootNode().getText();
+        int alias = text.indexOf("as b") + 3;
+        resource.update(alias, 1, "q"); // import "../lib/broken.roqme" as q
+        org.eclipse.emf.ecore.util.EcoreUtil.resolveAll(resource);
+        assertTrue(ownErrors(resource).toString(), ownErrors(resource).stream().anyMatch(e -> e.contains("b.level")));
+        text = resource.getParseResult().getRootNode().getText();
+        int use = text.indexOf("b.level");
+        resource.update(use, 1, "q"); // rule r : q.level > 3 ...
+        org.eclipse.emf.ecore.util.EcoreUtil.resolveAll(resource);
+        assertEquals(List.of(), ownErrors(resource));
+    }
+
+    private static List<String> ownErrors(Resource resource) {
+        return Models.validateAll(resource).stream().filter(i -> i.getSeverity() == Severity.ERROR)
+                .filter(i -> i.getUriToProblem().lastSegment().equals(resource.getURI().lastSegment()))
+                .map(Models::format).collect(Collectors.toList());
+    }
+
     /** Issue 17: a tree repeated with the same content is one tree for references; a different one is ambiguous. */
     @Test
     public void anIdenticallyRepeatedTreeResolvesToTheFirstAndADifferentOneIsAmbiguous() {

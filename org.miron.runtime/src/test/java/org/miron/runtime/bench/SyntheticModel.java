@@ -57,6 +57,15 @@ public final class SyntheticModel {
         return b.toString();
     }
 
+    /**
+     * {@code gradle :org.miron.runtime:syntheticModel -Pvarpoints=N -Pdir=DIR}: writes and generates
+     * the N-varpoint model in DIR (to time {@code miron generate DIR/src/synN.miron} on it).
+     */
+    public static void main(String[] args) throws IOException {
+        int n = Integer.parseInt(args[0]);
+        System.out.println("generated " + generate(n, Path.of(args[1])));
+    }
+
     /** Writes syn&lt;n&gt;.miron into dir/src and generates it into dir/out; returns the io.json. */
     public static Path generate(int n, Path dir) throws IOException {
         Path src = Files.createDirectories(dir.resolve("src"));
