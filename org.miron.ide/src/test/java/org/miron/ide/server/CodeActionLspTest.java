@@ -87,4 +87,58 @@ public class CodeActionLspTest {
         assertTrue(fixed, fixed.contains(importLine + "\n"));
         assertTrue(fixed, fixed.indexOf(importLine) < fixed.indexOf("@varpoint"));
     }
+
+    /** A small tree in its own buffer, so that its one diagnostic of the code is the one fixed. */
+    private static String tree(String format, String body) {
+        return "<root" + format + " main_tree_to_execute=\"M\">\n  <BehaviorTree ID=\"M\">\n    " + body
+                + "\n  </BehaviorTree>\n</root>\n";
+    }
+
+    @Test
+    public void versionThreeElementInAVersionFourFileIsRenamed() throws Exception {
+        String fixed = fix("v4.bt", tree(" BTCPP_format=\"4\"", "<SequenceStar><AlwaysSuccess/></SequenceStar>"),
+                "bt.v3-only-element", "Change to SequenceWithMemory");
+        assertTrue(fixed, fixed.contains("<SequenceWithMemory><AlwaysSuccess/></SequenceWithMemory>"));
+    }
+
+    @Test
+    public void versionFourElementInAVersionThreeFileIsRenamed() throws Exception {
+        String fixed = fix("v3.bt", tree("", "<SequenceWithMemory><AlwaysSuccess/></SequenceWithMemory>"),
+                "bt.v4-only-element", "Change to SequenceStar");
+        assertTrue(fixed, fixed.contains("<SequenceStar><AlwaysSuccess/></SequenceStar>"));
+    }
+
+    @Test
+    public void parallelPortOfTheOtherVersionIsRenamed() throws Exception {
+        String fixed = fix("v4.bt", tree(" BTCPP_format=\"4\"",
+                "<Parallel success_threshold=\"1\"><AlwaysSuccess/><AlwaysSuccess/></Parallel>"),
+                "bt.v3-only-attribute", "Change to success_count");
+        assertTrue(fixed, fixed.contains("<Parallel success_count=\"1\">"));
+        fixed = fix("v3.bt", tree("", "<Parallel failure_count=\"1\" success_threshold=\"1\"><AlwaysSuccess/><AlwaysSuccess/></Parallel>"),
+                "bt.v4-only-attribute", "Change to failure_threshold");
+        assertTrue(fixed, fixed.contains("<Parallel failure_threshold=\"1\" success_threshold=\"1\">"));
+    }
+
+    @Test
+    public void versionFourShorthandPortIsWrittenOut() throws Exception {
+        String fixed = fix("v3.bt", tree("", "<SetBlackboard output_key=\"{=}\" value=\"1\"/>"),
+                "bt.v4-only-attribute", "Change to {output_key}");
+        assertTrue(fixed, fixed.contains("<SetBlackboard output_key=\"{output_key}\" value=\"1\"/>"));
+    }
+
+    /** SubTreePlus → SubTree also changes how ports are remapped: the message explains, no rename is offered. */
+    @Test
+    public void noRenameWhereTheReplacementIsMoreThanARename() throws Exception {
+        String text = tree(" BTCPP_format=\"4\"", "<SubTreePlus ID=\"S\"/>\n  </BehaviorTree>\n  <BehaviorTree ID=\"S\">\n    <AlwaysSuccess/>");
+        String uri = session.client.open(session.workspace.resolve("v4.bt"), text);
+        Diagnostic diagnostic = session.client.awaitDiagnostics(uri,
+                ds -> ds.stream().anyMatch(d -> "bt.v3-only-element".equals(code(d))))
+                .stream().filter(d -> "bt.v3-only-element".equals(code(d))).findFirst().get();
+        assertTrue(diagnostic.getMessage().getLeft(), diagnostic.getMessage().getLeft().contains("_autoremap"));
+        List<Either<Command, CodeAction>> actions = session.client.server().getTextDocumentService()
+                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), diagnostic.getRange(),
+                        new CodeActionContext(List.of(diagnostic))))
+                .get(60, TimeUnit.SECONDS);
+        assertEquals(List.of(), actions);
+    }
 }

@@ -3,6 +3,7 @@ package org.miron.bt.ide.codeactions;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.eclipse.lsp4j.CodeAction;
 import org.eclipse.lsp4j.CodeActionKind;
@@ -34,16 +35,30 @@ public class IssueDataCodeActions implements ICodeActionService2 {
         ADD_INCLUDE
     }
 
-    private static final Map<String, Fix> FIXES = Map.of(
-            "bt.retry-old-spelling", Fix.RENAME_TAG,
-            "bt.fallback-star", Fix.RENAME_TAG,
-            "bt.close-tag-mismatch", Fix.REPLACE,
-            "bt.unknown-subtree", Fix.REPLACE,
-            "bt.unknown-main-tree", Fix.REPLACE,
-            "bt.unknown-reference", Fix.REPLACE,
-            "bt.missing-include", Fix.ADD_INCLUDE,
-            "roqme.unknown-reference", Fix.REPLACE,
-            "roqme.missing-import", Fix.ADD_IMPORT);
+    private static final Map<String, Fix> FIXES = Map.ofEntries(
+            Map.entry("bt.retry-old-spelling", Fix.RENAME_TAG),
+            Map.entry("bt.fallback-star", Fix.RENAME_TAG),
+            Map.entry("bt.close-tag-mismatch", Fix.REPLACE),
+            Map.entry("bt.unknown-subtree", Fix.REPLACE),
+            Map.entry("bt.unknown-main-tree", Fix.REPLACE),
+            Map.entry("bt.unknown-reference", Fix.REPLACE),
+            Map.entry("bt.missing-include", Fix.ADD_INCLUDE),
+            Map.entry("roqme.unknown-reference", Fix.REPLACE),
+            Map.entry("roqme.missing-import", Fix.ADD_IMPORT),
+            // BehaviorTree.CPP 3/4 differences whose replacement is a rename (BtVersionValidator)
+            Map.entry("bt.v3-only-element", Fix.RENAME_TAG),
+            Map.entry("bt.v4-only-element", Fix.RENAME_TAG),
+            Map.entry("bt.v3-only-attribute", Fix.REPLACE),
+            Map.entry("bt.v4-only-attribute", Fix.REPLACE));
+
+    /**
+     * Replacements the issue data names but a rename would get wrong: SubTreePlus → SubTree also
+     * changes how ports are remapped, BlackboardCheck → Precondition takes other ports, and in
+     * version 3 __autoremap exists on SubTreePlus only. The message tells what to write instead.
+     */
+    private static final Map<String, Set<String>> NOT_A_RENAME = Map.of(
+            "bt.v3-only-element", Set.of("SubTree", "Precondition"),
+            "bt.v4-only-attribute", Set.of("__autoremap"));
 
     @Override
     public List<Either<Command, CodeAction>> getCodeActions(Options options) {
@@ -65,6 +80,9 @@ public class IssueDataCodeActions implements ICodeActionService2 {
             Fix fix = diagnostic.getCode() == null || !diagnostic.getCode().isLeft() ? null
                     : FIXES.get(diagnostic.getCode().getLeft());
             List<String> data = IssueData.of(diagnostic.getData());
+            if (fix != null) {
+                data.removeAll(NOT_A_RENAME.getOrDefault(diagnostic.getCode().getLeft(), Set.of()));
+            }
             if (fix == null || data.isEmpty() || document == null) {
                 continue;
             }
