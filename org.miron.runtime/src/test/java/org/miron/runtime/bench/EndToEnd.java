@@ -76,6 +76,7 @@ final class EndToEnd {
                 int i = k + warm; // the input alternates over all rounds, warm-up included
                 int first = solves[0];
                 String expect = i % 2 == 0 ? "dock" : "pickDeliverCharge";
+                pause();
                 long t0 = System.nanoTime();
                 estimate(input, "power_autonomy", i % 2 == 0 ? 0.2 : 0.9);
                 String[] got = take(variants, "task");
@@ -105,6 +106,7 @@ final class EndToEnd {
                 // The newest query id so far; the wait tests each change once (a predicate copying the
                 // history on every test made this path quadratic: ≈ 4 ms of the bench's own).
                 long lastId = skills.history().stream().mapToLong(ParameterChange::id).max().orElse(-1);
+                pause();
                 long t0 = System.nanoTime();
                 estimate(input, "safety", i % 2 == 0 ? 0.35 : 0.95);
                 ParameterChange c = skills.awaitChange(x -> x.id() > lastId, TIMEOUT_MS)
@@ -171,6 +173,14 @@ final class EndToEnd {
             if (ti != null && cpu > 1_000_000) {
                 System.out.printf("  thread %-30s cpu %8.1f ms%n", ti.getThreadName(), cpu / 1e6);
             }
+        }
+    }
+
+    /** -Pgap=MS: an idle pause before each input, as inputs spaced in time would leave (default none). */
+    private static void pause() throws InterruptedException {
+        long gap = Long.getLong("bench.gap", 0);
+        if (gap > 0) {
+            Thread.sleep(gap);
         }
     }
 
