@@ -9,6 +9,7 @@ import java.util.concurrent.Callable;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.bt.bt.BTModel;
+import org.eclipse.xtext.resource.XtextResource;
 import org.miron.bt.convert.BtFormatConverter;
 import org.miron.bt.convert.Conversion;
 import org.miron.bt.convert.ConversionProblem;
@@ -69,8 +70,8 @@ public class ConvertCommand implements Callable<Integer> {
             err.flush();
             return 1;
         }
-        BTModel model = (BTModel) resource.getContents().get(0);
-        Conversion conversion = BtFormatConverter.convert(model, to);
+        BtFormatConverter.ConvertedFile converted = BtFormatConverter.convertFile((XtextResource) resource, to);
+        Conversion conversion = converted.conversion();
         if (!conversion.succeeded()) {
             String path = loader.displayPath(resource.getURI());
             for (ConversionProblem problem : conversion.getProblems()) {
@@ -79,7 +80,7 @@ public class ConvertCommand implements Callable<Integer> {
             err.flush();
             return 1;
         }
-        String text = BtFormatConverter.text(model);
+        String text = converted.text();
         if (output == null) {
             PrintWriter out = spec.commandLine().getOut();
             out.print(text);

@@ -48,6 +48,17 @@ public class ConvertCommandTest {
         assertTrue(back.out(), EcoreUtil.equals(load(example), load(v3)));
     }
 
+    /** Only what changes is rewritten: the file's comments and layout come through. */
+    @Test
+    public void theFileKeepsItsComments() throws Exception {
+        File example = Cli.ROOT.resolve("org.miron.bt/src/test/resources/bt/valid/prolog_and_comments.bt").toFile();
+        String original = Files.readString(example.toPath());
+        Cli cli = new Cli();
+        assertEquals(cli.err.toString(), 0, cli.run("convert", "--to", "4", example.getPath()));
+        assertEquals(original.replace("<root main_tree_to_execute", "<root BTCPP_format=\"4\" main_tree_to_execute"),
+                cli.out());
+    }
+
     @Test
     public void elementsWithoutEquivalentAreErrorsWithPositionAndCode() throws Exception {
         File file = tmp.newFile("scripted.bt");

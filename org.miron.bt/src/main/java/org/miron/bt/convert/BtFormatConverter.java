@@ -12,6 +12,7 @@ import java.util.regex.Pattern;
 import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
+import org.eclipse.xtext.resource.XtextResource;
 import org.miron.bt.formatting2.BtFormatting;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
@@ -74,9 +75,32 @@ public final class BtFormatConverter {
         return new Conversion(List.of(), replacements);
     }
 
+    /** A converted file: what the conversion found, and when it succeeded the file's new text (else null). */
+    public record ConvertedFile(Conversion conversion, String text) {
+    }
+
+    /**
+     * Converts a parsed file and writes it back as text, keeping everything the conversion does not
+     * touch as it was: comments, blank lines, attribute layout, the XML declaration. Only changed
+     * start tags, end-tag names and attributes are rewritten (ConvertedText); where that cannot
+     * express a change, the whole model is printed as {@link #text} does. Converts the resource's
+     * model in place, like {@link #convert}.
+     */
+    public static ConvertedFile convertFile(XtextResource resource, int targetVersion) {
+        ConvertedText edits = new ConvertedText(resource);
+        BTModel model = (BTModel) resource.getContents().get(0);
+        Conversion conversion = convert(model, targetVersion);
+        if (!conversion.succeeded()) {
+            return new ConvertedFile(conversion, null);
+        }
+        String text = edits.write(conversion);
+        return new ConvertedFile(conversion, text != null ? text : text(model));
+    }
+
     /**
      * The converted model as a file: the source's XML declaration, then the model printed by the
-     * BT formatter. Comments of the source are not kept (the serializer writes the model).
+     * BT formatter. Comments of the source are not kept (the serializer writes the model): to keep
+     * them, convert with {@link #convertFile}.
      */
     public static String text(BTModel model) {
         String printed = BtFormatting.print(model).replaceAll("^\\s+", "");
