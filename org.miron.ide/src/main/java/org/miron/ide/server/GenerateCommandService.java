@@ -16,9 +16,6 @@ import org.eclipse.xtext.util.CancelIndicator;
 import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.Issue;
 
-import com.google.gson.JsonElement;
-import com.google.gson.JsonPrimitive;
-
 /**
  * workspace/executeCommand {@code miron.generate} with arguments {@code [uri]} or
  * {@code [uri, outputFolder]}: runs the generators on the .miron file as the editor has it
@@ -37,12 +34,12 @@ public class GenerateCommandService implements IExecutableCommandService {
     @Override
     public Object execute(ExecuteCommandParams params, ILanguageServerAccess access, CancelIndicator cancelIndicator) {
         List<Object> arguments = params.getArguments() == null ? List.of() : params.getArguments();
-        String uri = arguments.isEmpty() ? null : text(arguments.get(0));
+        String uri = arguments.isEmpty() ? null : CommandArguments.text(arguments.get(0));
         Map<String, Object> result;
         if (uri == null || !uri.endsWith(".miron")) {
             result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron file as first argument");
         } else {
-            String output = arguments.size() > 1 ? text(arguments.get(1)) : null;
+            String output = arguments.size() > 1 ? CommandArguments.text(arguments.get(1)) : null;
             try {
                 result = access.doSyncRead(uri, context -> generate((XtextResource) context.getResource(), output,
                         cancelIndicator));
@@ -93,17 +90,6 @@ public class GenerateCommandService implements IExecutableCommandService {
         result.put("written", written);
         result.put("errors", errors);
         return result;
-    }
-
-    /** An argument as a string, however it arrived (JSON from a client, or a string in process). */
-    private static String text(Object argument) {
-        if (argument instanceof JsonPrimitive primitive) {
-            return primitive.getAsString();
-        }
-        if (argument instanceof JsonElement) {
-            return null;
-        }
-        return argument == null ? null : argument.toString();
     }
 
 }

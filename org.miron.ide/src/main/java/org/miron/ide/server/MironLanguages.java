@@ -2,6 +2,7 @@ package org.miron.ide.server;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.Constants;
+import org.eclipse.xtext.ide.server.commands.IExecutableCommandService;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceFactory;
 import org.eclipse.xtext.util.Modules2;
@@ -58,14 +59,16 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
 
     /**
      * BT's ide set-up where .xml is a BT extension too: Xtext's builder only builds (and so only
-     * validates and publishes diagnostics for) files whose extension the language declares.
+     * validates and publishes diagnostics for) files whose extension the language declares. Its
+     * command is miron.convert.
      */
     private static final class BtServerSetup extends BtIdeSetup {
         @Override
         public Injector createInjector() {
             return Guice.createInjector(Modules2.mixin(new BtRuntimeModule(), new BtIdeModule(),
                     binder -> binder.bind(String.class).annotatedWith(Names.named(Constants.FILE_EXTENSIONS))
-                            .toInstance("bt,xml")));
+                            .toInstance("bt,xml"),
+                    binder -> binder.bind(IExecutableCommandService.class).to(ConvertCommandService.class)));
         }
     }
 

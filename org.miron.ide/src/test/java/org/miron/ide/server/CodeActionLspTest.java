@@ -139,6 +139,63 @@ public class CodeActionLspTest {
                 .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), diagnostic.getRange(),
                         new CodeActionContext(List.of(diagnostic))))
                 .get(60, TimeUnit.SECONDS);
-        assertEquals(List.of(), actions);
+        assertEquals(List.of(), actions.stream().filter(Either::isRight).map(Either::getRight)
+                .filter(a -> "quickfix".equals(a.getKind())).toList());
+    }
+
+    /** The `ok` of a command's JSON answer. */
+    private static boolean ok(Object answer) {
+        return new com.google.gson.Gson().toJsonTree(answer).getAsJsonObject().get("ok").getAsBoolean();
+    }
+
+    /** The source action of a behaviour tree, and miron.convert applied through workspace/applyEdit. */
+    @Test
+    public void aTreeIsConvertedThroughTheServerWithItsComments() throws Exception {
+        String text = "<?xml version=\"1.0\"?>\n<!-- kept -->\n" + tree("", "<SequenceStar>  <!-- also kept -->\n"
+                + "      <AlwaysSuccess/>\n    </SequenceStar>");
+        String uri = session.client.open(session.workspace.resolve("old.bt"), text);
+        session.client.awaitDiagnostics(uri, ds -> true);
+        List<Either<Command, CodeAction>> actions = session.client.server().getTextDocumentService()
+                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri),
+                        new org.eclipse.lsp4j.Range(new org.eclipse.lsp4j.Position(0, 0), new org.eclipse.lsp4j.Position(0, 0)),
+                        new CodeActionContext(List.of())))
+                .get(60, TimeUnit.SECONDS);
+        CodeAction convert = actions.stream().filter(Either::isRight).map(Either::getRight)
+                .filter(a -> a.getTitle().equals("Convert to BehaviorTree.CPP 4")).findFirst()
+                .orElseThrow(() -> new AssertionError("no convert action in " + actions));
+        assertEquals("source", convert.getKind());
+        Object answer = session.client.server().getWorkspaceService().executeCommand(
+                new org.eclipse.lsp4j.ExecuteCommandParams(convert.getCommand().getCommand(), convert.getCommand().getArguments()))
+                .get(60, TimeUnit.SECONDS);
+        assertTrue(String.valueOf(answer), ok(answer));
+        synchronized (session.client.appliedEdits) {
+            long end = System.currentTimeMillis() + 30_000;
+            while (session.client.appliedEdits.isEmpty() && System.currentTimeMillis() < end) {
+                session.client.appliedEdits.wait(1000);
+            }
+        }
+        List<TextEdit> edits = session.client.appliedEdits.get(0).getEdit().getChanges().get(uri);
+        String converted = TextEdits.apply(text, edits);
+        assertEquals(text.replace("<root main", "<root BTCPP_format=\"4\" main").replace("SequenceStar", "SequenceWithMemory"),
+                converted);
+        // only source actions asked for: still offered; quick fixes only: not
+        List<Either<Command, CodeAction>> quickFixes = session.client.server().getTextDocumentService()
+                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri),
+                        new org.eclipse.lsp4j.Range(new org.eclipse.lsp4j.Position(0, 0), new org.eclipse.lsp4j.Position(0, 0)),
+                        new CodeActionContext(List.of(), List.of("quickfix"))))
+                .get(60, TimeUnit.SECONDS);
+        assertEquals(List.of(), quickFixes);
+    }
+
+    @Test
+    public void aTreeWithoutVersion3EquivalentIsNotConverted() throws Exception {
+        String text = tree(" BTCPP_format=\"4\"", "<Script code=\"a := 1\"/>");
+        String uri = session.client.open(session.workspace.resolve("scripted.bt"), text);
+        session.client.awaitDiagnostics(uri, ds -> true);
+        Object answer = session.client.server().getWorkspaceService().executeCommand(
+                new org.eclipse.lsp4j.ExecuteCommandParams("miron.convert", List.of(uri, "3"))).get(60, TimeUnit.SECONDS);
+        assertFalse(String.valueOf(answer), ok(answer));
+        assertTrue(String.valueOf(answer), String.valueOf(answer).contains("scripted.bt:3:5: error [bt.no-v3-equivalent]"));
+        assertEquals(List.of(), session.client.appliedEdits);
     }
 }

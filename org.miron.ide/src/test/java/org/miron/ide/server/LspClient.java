@@ -184,6 +184,19 @@ public final class LspClient implements LanguageClient, AutoCloseable {
     public void logMessage(MessageParams params) {
     }
 
+    /** The edits the server asked to apply (workspace/applyEdit), in order; all accepted. */
+    public final List<org.eclipse.lsp4j.ApplyWorkspaceEditParams> appliedEdits = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    @Override
+    public CompletableFuture<org.eclipse.lsp4j.ApplyWorkspaceEditResponse> applyEdit(
+            org.eclipse.lsp4j.ApplyWorkspaceEditParams params) {
+        appliedEdits.add(params);
+        synchronized (appliedEdits) {
+            appliedEdits.notifyAll();
+        }
+        return CompletableFuture.completedFuture(new org.eclipse.lsp4j.ApplyWorkspaceEditResponse(true));
+    }
+
     @Override
     public void close() throws Exception {
         try {

@@ -16,6 +16,7 @@ import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.server.Document;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.miron.bt.bt.BTModel;
 
 /**
  * Quick fixes of all three languages, made from a diagnostic's issue code and issue data (see
@@ -23,6 +24,9 @@ import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
  * the import to add, so a fix only turns them into text edits.
  */
 public class IssueDataCodeActions implements ICodeActionService2 {
+
+    /** The language server's command that converts a behaviour tree (org.miron.ide's ConvertCommandService). */
+    public static final String CONVERT_COMMAND = "miron.convert";
 
     private enum Fix {
         /** Rename an element's tag, also in its closing tag (data: the new tags, one action each). */
@@ -75,6 +79,7 @@ public class IssueDataCodeActions implements ICodeActionService2 {
 
     private List<Either<Command, CodeAction>> actions(Options options) {
         List<Either<Command, CodeAction>> actions = new ArrayList<>();
+        convertAction(options, actions);
         Document document = options.getDocument();
         for (Diagnostic diagnostic : options.getCodeActionParams().getContext().getDiagnostics()) {
             Fix fix = diagnostic.getCode() == null || !diagnostic.getCode().isLeft() ? null
@@ -98,6 +103,26 @@ public class IssueDataCodeActions implements ICodeActionService2 {
             }
         }
         return actions;
+    }
+
+    /**
+     * In a behaviour tree, a source action converting the file to the other BehaviorTree.CPP
+     * version: the server's command miron.convert does it when chosen (nothing is computed here,
+     * clients ask for code actions at every caret move).
+     */
+    private static void convertAction(Options options, List<Either<Command, CodeAction>> actions) {
+        List<String> only = options.getCodeActionParams().getContext().getOnly();
+        if (options.getResource() == null || options.getResource().getContents().isEmpty()
+                || !(options.getResource().getContents().get(0) instanceof BTModel model)
+                || only != null && only.stream().noneMatch(kind -> CodeActionKind.Source.startsWith(kind))) {
+            return;
+        }
+        String target = model.formatVersion() == 4 ? "3" : "4";
+        String title = "Convert to BehaviorTree.CPP " + target;
+        CodeAction action = new CodeAction(title);
+        action.setKind(CodeActionKind.Source);
+        action.setCommand(new Command(title, CONVERT_COMMAND, List.of(options.getURI(), target)));
+        actions.add(Either.forRight(action));
     }
 
     private static void action(List<Either<Command, CodeAction>> actions, Options options, Diagnostic diagnostic,
