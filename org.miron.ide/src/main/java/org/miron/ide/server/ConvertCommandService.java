@@ -11,8 +11,6 @@ import java.util.Map;
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.lsp4j.ApplyWorkspaceEditParams;
 import org.eclipse.lsp4j.ExecuteCommandParams;
-import org.eclipse.lsp4j.MessageParams;
-import org.eclipse.lsp4j.MessageType;
 import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.Range;
 import org.eclipse.lsp4j.TextEdit;
@@ -44,9 +42,9 @@ public class ConvertCommandService implements IExecutableCommandService {
 
     @Override
     public Object execute(ExecuteCommandParams params, ILanguageServerAccess access, CancelIndicator cancelIndicator) {
-        List<Object> arguments = params.getArguments() == null ? List.of() : params.getArguments();
-        String uri = arguments.isEmpty() ? null : CommandArguments.text(arguments.get(0));
-        String version = arguments.size() > 1 ? CommandArguments.text(arguments.get(1)) : null;
+        CommandArguments arguments = new CommandArguments(params);
+        String uri = arguments.text(0);
+        String version = arguments.text(1);
         Map<String, Object> result;
         if (uri == null || !("3".equals(version) || "4".equals(version))) {
             result = answer(false, List.of(), "miron.convert needs the URI of a behaviour tree and the version, 3 or 4");
@@ -58,11 +56,7 @@ public class ConvertCommandService implements IExecutableCommandService {
                 result = answer(false, List.of(), "miron.convert: cannot read " + uri + ": " + unreadable);
             }
         }
-        if (access.getLanguageClient() != null) {
-            access.getLanguageClient().showMessage(new MessageParams(
-                    Boolean.TRUE.equals(result.get("ok")) ? MessageType.Info : MessageType.Error,
-                    (String) result.get("message")));
-        }
+        CommandArguments.tell(access, result);
         return result;
     }
 

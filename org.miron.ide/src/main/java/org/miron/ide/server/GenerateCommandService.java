@@ -7,8 +7,6 @@ import java.util.List;
 import java.util.Map;
 
 import org.eclipse.lsp4j.ExecuteCommandParams;
-import org.eclipse.lsp4j.MessageParams;
-import org.eclipse.lsp4j.MessageType;
 import org.eclipse.xtext.ide.server.ILanguageServerAccess;
 import org.eclipse.xtext.ide.server.commands.IExecutableCommandService;
 import org.eclipse.xtext.resource.XtextResource;
@@ -33,13 +31,13 @@ public class GenerateCommandService implements IExecutableCommandService {
 
     @Override
     public Object execute(ExecuteCommandParams params, ILanguageServerAccess access, CancelIndicator cancelIndicator) {
-        List<Object> arguments = params.getArguments() == null ? List.of() : params.getArguments();
-        String uri = arguments.isEmpty() ? null : CommandArguments.text(arguments.get(0));
+        CommandArguments arguments = new CommandArguments(params);
+        String uri = arguments.text(0);
         Map<String, Object> result;
         if (uri == null || !uri.endsWith(".miron")) {
             result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron file as first argument");
         } else {
-            String output = arguments.size() > 1 ? CommandArguments.text(arguments.get(1)) : null;
+            String output = arguments.text(1);
             try {
                 result = access.doSyncRead(uri, context -> generate((XtextResource) context.getResource(), output,
                         cancelIndicator));
@@ -48,11 +46,7 @@ public class GenerateCommandService implements IExecutableCommandService {
                 result = answer(List.of(), List.of(), "miron.generate: cannot read " + uri + ": " + unreadable);
             }
         }
-        if (access.getLanguageClient() != null) {
-            boolean ok = Boolean.TRUE.equals(result.get("ok"));
-            access.getLanguageClient().showMessage(
-                    new MessageParams(ok ? MessageType.Info : MessageType.Error, (String) result.get("message")));
-        }
+        CommandArguments.tell(access, result);
         return result;
     }
 

@@ -28,15 +28,24 @@ public class CodeActionLspTest {
         return d.getCode() == null ? null : d.getCode().getLeft();
     }
 
+    /** The code actions the server offers for the range, with these diagnostics, of the kinds in only (null: all). */
+    private List<Either<Command, CodeAction>> codeActions(String uri, org.eclipse.lsp4j.Range range,
+            List<Diagnostic> diagnostics, List<String> only) throws Exception {
+        return session.client.server().getTextDocumentService()
+                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), range,
+                        new CodeActionContext(diagnostics, only)))
+                .get(60, TimeUnit.SECONDS);
+    }
+
+    private static final org.eclipse.lsp4j.Range START = new org.eclipse.lsp4j.Range(new org.eclipse.lsp4j.Position(0, 0),
+            new org.eclipse.lsp4j.Position(0, 0));
+
     /** Opens the buffer, waits for the diagnostic with the code, and applies the action with the title. */
     private String fix(String file, String text, String code, String title) throws Exception {
         String uri = session.client.open(session.workspace.resolve(file), text);
         Diagnostic diagnostic = session.client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> code.equals(code(d))))
                 .stream().filter(d -> code.equals(code(d))).findFirst().get();
-        List<Either<Command, CodeAction>> actions = session.client.server().getTextDocumentService()
-                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), diagnostic.getRange(),
-                        new CodeActionContext(List.of(diagnostic))))
-                .get(60, TimeUnit.SECONDS);
+        List<Either<Command, CodeAction>> actions = codeActions(uri, diagnostic.getRange(), List.of(diagnostic), null);
         CodeAction action = actions.stream().filter(Either::isRight).map(Either::getRight)
                 .filter(a -> a.getTitle().equals(title)).findFirst()
                 .orElseThrow(() -> new AssertionError("no action '" + title + "' in " + actions));
@@ -135,10 +144,7 @@ public class CodeActionLspTest {
                 ds -> ds.stream().anyMatch(d -> "bt.v3-only-element".equals(code(d))))
                 .stream().filter(d -> "bt.v3-only-element".equals(code(d))).findFirst().get();
         assertTrue(diagnostic.getMessage().getLeft(), diagnostic.getMessage().getLeft().contains("_autoremap"));
-        List<Either<Command, CodeAction>> actions = session.client.server().getTextDocumentService()
-                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri), diagnostic.getRange(),
-                        new CodeActionContext(List.of(diagnostic))))
-                .get(60, TimeUnit.SECONDS);
+        List<Either<Command, CodeAction>> actions = codeActions(uri, diagnostic.getRange(), List.of(diagnostic), null);
         assertEquals(List.of(), actions.stream().filter(Either::isRight).map(Either::getRight)
                 .filter(a -> "quickfix".equals(a.getKind())).toList());
     }
@@ -155,11 +161,7 @@ public class CodeActionLspTest {
                 + "      <AlwaysSuccess/>\n    </SequenceStar>");
         String uri = session.client.open(session.workspace.resolve("old.bt"), text);
         session.client.awaitDiagnostics(uri, ds -> true);
-        List<Either<Command, CodeAction>> actions = session.client.server().getTextDocumentService()
-                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri),
-                        new org.eclipse.lsp4j.Range(new org.eclipse.lsp4j.Position(0, 0), new org.eclipse.lsp4j.Position(0, 0)),
-                        new CodeActionContext(List.of())))
-                .get(60, TimeUnit.SECONDS);
+        List<Either<Command, CodeAction>> actions = codeActions(uri, START, List.of(), null);
         CodeAction convert = actions.stream().filter(Either::isRight).map(Either::getRight)
                 .filter(a -> a.getTitle().equals("Convert to BehaviorTree.CPP 4")).findFirst()
                 .orElseThrow(() -> new AssertionError("no convert action in " + actions));
@@ -178,12 +180,8 @@ public class CodeActionLspTest {
         String converted = TextEdits.apply(text, edits);
         assertEquals(text.replace("<root main", "<root BTCPP_format=\"4\" main").replace("SequenceStar", "SequenceWithMemory"),
                 converted);
-        // only source actions asked for: still offered; quick fixes only: not
-        List<Either<Command, CodeAction>> quickFixes = session.client.server().getTextDocumentService()
-                .codeAction(new CodeActionParams(new TextDocumentIdentifier(uri),
-                        new org.eclipse.lsp4j.Range(new org.eclipse.lsp4j.Position(0, 0), new org.eclipse.lsp4j.Position(0, 0)),
-                        new CodeActionContext(List.of(), List.of("quickfix"))))
-                .get(60, TimeUnit.SECONDS);
+        // a client asking for quick fixes only gets no source action
+        List<Either<Command, CodeAction>> quickFixes = codeActions(uri, START, List.of(), List.of("quickfix"));
         assertEquals(List.of(), quickFixes);
     }
 
