@@ -35,6 +35,7 @@ public class ProcessLspTest {
             InitializeResult result = client.initialize(workspace);
             assertTrue(result.getCapabilities().getCompletionProvider().getTriggerCharacters().containsAll(List.of(".", ":", "<")));
             assertTrue(result.getCapabilities().getExecuteCommandProvider().getCommands().contains("miron.generate"));
+            assertTrue(result.getCapabilities().getExecuteCommandProvider().getCommands().contains("miron.convert"));
             String uri = client.open(workspace.resolve("intralogistics.miron"));
             client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
             client.server().shutdown().get(60, TimeUnit.SECONDS);
