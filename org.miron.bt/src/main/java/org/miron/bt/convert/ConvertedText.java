@@ -19,6 +19,7 @@ import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.XtextResource;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
+import org.miron.bt.bt.SubtreeNode;
 import org.miron.bt.bt.TreeNode;
 
 /**
@@ -32,7 +33,7 @@ import org.miron.bt.bt.TreeNode;
 final class ConvertedText {
     /** Where one element's parts are in the original text. */
     private record Element(String tag, int tagOffset, int tagLength, int startTagEnd, int endTagNameOffset,
-            List<Attribute> attributes, Map<Attribute, String> written, int lastItemEnd) {
+            List<Attribute> attributes, Map<Attribute, String> written, int lastItemEnd, boolean hasId) {
     }
 
     private final XtextResource resource;
@@ -89,8 +90,10 @@ final class ConvertedText {
                 written.put(attribute, attribute.getName() + "\u0000" + attribute.getValue());
             }
         }
+        boolean hasId = false;
         for (int i = 2; i < close; i++) {
             lastItemEnd = Math.max(lastItemEnd, leaves.get(i).getEndOffset());
+            hasId |= leaves.get(i).getText().equals("ID");
         }
         int endTagName = -1;
         if (leaves.get(close).getText().equals(">") && leaves.size() >= close + 3
@@ -98,7 +101,7 @@ final class ConvertedText {
             endTagName = leaves.get(leaves.size() - 2).getOffset();
         }
         elements.put(object, new Element(name.getText(), name.getOffset(), name.getLength(),
-                leaves.get(close).getOffset(), endTagName, List.copyOf(attributes), written, lastItemEnd));
+                leaves.get(close).getOffset(), endTagName, List.copyOf(attributes), written, lastItemEnd, hasId));
     }
 
     /** The converted model's text, or null when the edits cannot express the conversion. */
@@ -114,7 +117,9 @@ final class ConvertedText {
             List<Attribute> attributes = now instanceof TreeNode node ? node.getAttributes()
                     : now instanceof BTModel root ? root.getAttributes() : was.attributes();
             if (!tag.equals(was.tag())) {
-                edit(regions, texts, was.tagOffset(), was.tagOffset() + was.tagLength(), tag);
+                // a tree used as an element name (<GoTo/>) becomes <SubTree ID="GoTo"/>
+                String id = now instanceof SubtreeNode && !was.hasId() ? " ID=" + values.toString(was.tag(), "STRING") : "";
+                edit(regions, texts, was.tagOffset(), was.tagOffset() + was.tagLength(), tag + id);
                 if (was.endTagNameOffset() >= 0) {
                     edit(regions, texts, was.endTagNameOffset(), was.endTagNameOffset() + was.tag().length(), tag);
                 }

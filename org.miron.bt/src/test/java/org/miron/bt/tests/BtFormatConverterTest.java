@@ -275,4 +275,15 @@ public class BtFormatConverterTest {
         }
         assertTrue("kept comments in " + converted + ", printed " + printed, converted > 30 && printed == 0);
     }
+
+    /** A tree used as an element name, the one conversion that adds a token the file did not have. */
+    @Test
+    public void aTreeUsedAsElementNameBecomesASubTreeInPlace() throws Exception {
+        String v3 = "<root main_tree_to_execute=\"Main\">\n  <BehaviorTree ID=\"Main\">\n    <Sequence>\n"
+                + "      <GoTo/> <!-- the tree below -->\n      <GoTo x=\"1\"/>\n    </Sequence>\n  </BehaviorTree>\n"
+                + "  <BehaviorTree ID=\"GoTo\"><AlwaysSuccess/></BehaviorTree>\n</root>\n";
+        String v4 = BtFormatConverter.convertFile(BtFiles.parse(v3, new File(folder.getRoot(), "compact.bt")), 4).text();
+        assertTrue(v4, v4.contains("      <SubTree ID=\"GoTo\"/> <!-- the tree below -->\n"));
+        assertTrue(v4, v4.contains("<root BTCPP_format=\"4\" main_tree_to_execute=\"Main\">"));
+    }
 }
