@@ -244,6 +244,7 @@ public class EquinoxTest {
         assertTrue(response, response.contains("\"result\"") && response.contains("\"capabilities\""));
         assertTrue(response, response.contains("completionProvider"));
         assertTrue(response, response.contains("miron.generate"));
+        assertTrue(response, response.contains("miron.convert")); // the BT language's command (source action)
     }
 
     @Test
