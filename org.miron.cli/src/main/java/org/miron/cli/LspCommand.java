@@ -14,7 +14,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "lsp", mixinStandardHelpOptions = true,
         description = { "Runs the MIRoN language server (Language Server Protocol) for behaviour trees (.bt, woven .xml), "
                 + "RoQME (.roqme) and MIRoN (.miron) files: diagnostics as `miron check`, completion, hover, go to "
-                + "definition, references, outline, formatting, folding, quick fixes and the command miron.generate.",
+                + "definition, references, outline, formatting, folding, quick fixes and the commands miron.generate "
+                + "and miron.convert.",
                 "By default it speaks LSP on standard input and output, as editors start it; with --socket it "
                         + "listens on 127.0.0.1 only and serves each client that connects." },
         exitCodeListHeading = "Exit codes:%n",
