@@ -83,5 +83,54 @@ public class ConvertCommandTest {
         assertEquals(2, Cli.exit("convert", "--to", "5", broken.getPath()));
         assertEquals(2, Cli.exit("convert", broken.getPath()));
         assertEquals(2, Cli.exit("convert", "--to", "4", new File(tmp.getRoot(), "missing.bt").getPath()));
+        assertEquals(2, Cli.exit("convert", "--to", "4", broken.getPath(), broken.getPath())); // several: --in-place
+        assertEquals(2, Cli.exit("convert", "--to", "4", "--in-place", "-o", "x.bt", broken.getPath()));
+    }
+
+    /** A project's trees migrated at once; an include keeps resolving, comments stay. */
+    @Test
+    public void severalFilesAreRewrittenInPlace() throws Exception {
+        File lib = tmp.newFile("lib.bt");
+        Files.writeString(lib.toPath(), "<root>\n  <!-- shared -->\n  <BehaviorTree ID=\"Go\">\n"
+                + "    <SequenceStar><AlwaysSuccess/></SequenceStar>\n  </BehaviorTree>\n</root>\n", StandardCharsets.UTF_8);
+        File main = tmp.newFile("main.bt");
+        Files.writeString(main.toPath(), "<root main_tree_to_execute=\"Main\">\n  <include path=\"lib.bt\"/>\n"
+                + "  <BehaviorTree ID=\"Main\">\n    <SubTreePlus ID=\"Go\"/> <!-- go -->\n  </BehaviorTree>\n</root>\n",
+                StandardCharsets.UTF_8);
+        Cli cli = new Cli();
+        assertEquals(cli.err.toString(), 0, cli.run("convert", "--to", "4", "-i", lib.getPath(), main.getPath()));
+        assertEquals("", cli.out());
+        assertTrue(cli.err.toString(), cli.err.toString().contains("wrote " + lib) && cli.err.toString().contains("wrote " + main));
+        assertEquals("<root BTCPP_format=\"4\">\n  <!-- shared -->\n  <BehaviorTree ID=\"Go\">\n"
+                + "    <SequenceWithMemory><AlwaysSuccess/></SequenceWithMemory>\n  </BehaviorTree>\n</root>\n",
+                Files.readString(lib.toPath()));
+        assertEquals("<root BTCPP_format=\"4\" main_tree_to_execute=\"Main\">\n  <include path=\"lib.bt\"/>\n"
+                + "  <BehaviorTree ID=\"Main\">\n    <SubTree ID=\"Go\" _autoremap=\"false\"/> <!-- go -->\n"
+                + "  </BehaviorTree>\n</root>\n", Files.readString(main.toPath()));
+        ModelLoader loader = new ModelLoader();
+        loader.load(main);
+        assertTrue(loader.validateAll().toString(), loader.validateAll().stream()
+                .noneMatch(d -> d.severity() == Diagnostic.Severity.ERROR));
+        // converted again: nothing to do, nothing written
+        Cli again = new Cli();
+        assertEquals(0, again.run("convert", "--to", "4", "-i", lib.getPath(), main.getPath()));
+        assertEquals("", again.err.toString());
+    }
+
+    /** All or nothing: one file that cannot be converted, and no file is written. */
+    @Test
+    public void oneFileWithoutEquivalentAndNoneIsWritten() throws Exception {
+        File plain = tmp.newFile("plain.bt");
+        String plainText = "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"A\"><SequenceWithMemory><AlwaysSuccess/>"
+                + "</SequenceWithMemory></BehaviorTree>\n</root>\n";
+        Files.writeString(plain.toPath(), plainText, StandardCharsets.UTF_8);
+        File scripted = tmp.newFile("scripted4.bt");
+        String scriptedText = "<root BTCPP_format=\"4\">\n  <BehaviorTree ID=\"B\"><Script code=\"a := 1\"/></BehaviorTree>\n</root>\n";
+        Files.writeString(scripted.toPath(), scriptedText, StandardCharsets.UTF_8);
+        Cli cli = new Cli();
+        assertEquals(1, cli.run("convert", "--to", "3", "--in-place", plain.getPath(), scripted.getPath()));
+        assertTrue(cli.err.toString(), cli.err.toString().contains("scripted4.bt:2:24: error [bt.no-v3-equivalent]"));
+        assertEquals(plainText, Files.readString(plain.toPath()));
+        assertEquals(scriptedText, Files.readString(scripted.toPath()));
     }
 }
