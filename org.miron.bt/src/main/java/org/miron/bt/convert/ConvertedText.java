@@ -32,7 +32,7 @@ import org.miron.bt.bt.TreeNode;
  */
 final class ConvertedText {
     /** Where one element's parts are in the original text. */
-    private record Element(String tag, int tagOffset, int tagLength, int startTagEnd, int endTagNameOffset,
+    private record Element(String tag, int tagOffset, int tagLength, int endTagNameOffset,
             List<Attribute> attributes, Map<Attribute, String> written, int lastItemEnd, boolean hasId) {
     }
 
@@ -100,8 +100,8 @@ final class ConvertedText {
                 && leaves.get(leaves.size() - 3).getText().equals("</")) {
             endTagName = leaves.get(leaves.size() - 2).getOffset();
         }
-        elements.put(object, new Element(name.getText(), name.getOffset(), name.getLength(),
-                leaves.get(close).getOffset(), endTagName, List.copyOf(attributes), written, lastItemEnd, hasId));
+        elements.put(object, new Element(name.getText(), name.getOffset(), name.getLength(), endTagName,
+                List.copyOf(attributes), written, lastItemEnd, hasId));
     }
 
     /** The converted model's text, or null when the edits cannot express the conversion. */
