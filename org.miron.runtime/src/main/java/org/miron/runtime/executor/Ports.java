@@ -2,9 +2,12 @@ package org.miron.runtime.executor;
 
 import java.util.Collections;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.function.Function;
+import java.util.function.Predicate;
 
 /**
  * The ports of one node: its XML attributes read through its blackboard. A value {@code {key}} or
@@ -47,6 +50,30 @@ public final class Ports {
 
     public Map<String, String> attributes() {
         return attributes;
+    }
+
+    /**
+     * Binds a subtree call's ports into the subtree's own blackboard, as both BehaviorTree.CPP
+     * versions do: a port pointing at a parent key is remapped to it, a literal is written into the
+     * child. Attributes {@code skip} names (the call's own settings) are left out.
+     *
+     * @return the ports bound
+     */
+    public Set<String> bindInto(Blackboard child, Predicate<String> skip) {
+        Set<String> bound = new LinkedHashSet<>();
+        attributes.forEach((port, value) -> {
+            if (skip.test(port)) {
+                return;
+            }
+            Optional<String> key = blackboardKey(port, value);
+            if (key.isPresent()) {
+                child.remap(port, key.get());
+            } else {
+                child.set(port, value);
+            }
+            bound.add(port);
+        });
+        return bound;
     }
 
     public Blackboard blackboard() {

@@ -376,19 +376,8 @@ public final class TreeBuilder {
     private Node subtreePlus(SubtreePlus node, NodeInfo info, Blackboard parent, Deque<String> stack) {
         BehaviorTree tree = target(node, info);
         Blackboard blackboard = parent.createChild();
-        Set<String> mapped = new LinkedHashSet<>();
-        info.ports().attributes().forEach((port, value) -> {
-            if (port.equals("name") || port.equals(SHARED) || port.equals(AUTOREMAP)) {
-                return;
-            }
-            var key = Ports.blackboardKey(port, value);
-            if (key.isPresent()) {
-                blackboard.remap(port, key.get());
-            } else {
-                blackboard.set(port, value);
-            }
-            mapped.add(port);
-        });
+        Set<String> mapped = info.ports().bindInto(blackboard,
+                port -> port.equals("name") || port.equals(SHARED) || port.equals(AUTOREMAP));
         if (booleanAttribute(info, AUTOREMAP)) {
             for (String key : keysUsedIn(tree)) {
                 if (!mapped.contains(key)) {

@@ -133,17 +133,7 @@ final class V4Nodes {
      */
     static Blackboard subtreeBlackboard(NodeInfo info, Blackboard parent) {
         Blackboard blackboard = parent.createChild();
-        info.ports().attributes().forEach((port, value) -> {
-            if (port.equals("name") || port.equals("ID") || port.startsWith("_")) {
-                return;
-            }
-            var key = Ports.blackboardKey(port, value);
-            if (key.isPresent()) {
-                blackboard.remap(port, key.get());
-            } else {
-                blackboard.set(port, value);
-            }
-        });
+        info.ports().bindInto(blackboard, port -> port.equals("name") || port.equals("ID") || port.startsWith("_"));
         String autoremap = info.ports().raw("_autoremap");
         if (autoremap != null) {
             try {
