@@ -15,14 +15,15 @@ import org.junit.Assume;
 /**
  * The real BehaviorTree.CPP 4 as an oracle: behaviortreepy in build/btcpp4-venv (installed by
  * scripts/ensure-btcpp4.sh), driven by src/test/resources/btcpp4/load_trees.py as a process.
+ * Public for the other modules' tests (the generator's woven trees).
  */
-final class BtCpp4 {
-    static final File SCRIPT = new File("src/test/resources/btcpp4/load_trees.py");
+public final class BtCpp4 {
+    static final File SCRIPT = new File(BtFiles.repositoryRoot(), "org.miron.bt/src/test/resources/btcpp4/load_trees.py");
 
     /** What the library said about one file: loaded, or rejected with its message. */
-    static final class Verdict {
-        final boolean loaded;
-        final String message;
+    public static final class Verdict {
+        public final boolean loaded;
+        public final String message;
 
         Verdict(boolean loaded, String message) {
             this.loaded = loaded;
@@ -38,7 +39,7 @@ final class BtCpp4 {
     }
 
     /** Skips the calling test, saying why, when the oracle is not installed. */
-    static void assumeInstalled() {
+    public static void assumeInstalled() {
         if (!python().canExecute()) {
             String reason = "BehaviorTree.CPP 4 oracle not installed (" + python()
                     + "; scripts/ensure-btcpp4.sh installs it): test skipped";
@@ -48,7 +49,7 @@ final class BtCpp4 {
     }
 
     /** Loads the files in one library process; the verdicts in the order of the files. */
-    static Map<File, Verdict> load(List<File> files) throws IOException, InterruptedException {
+    public static Map<File, Verdict> load(List<File> files) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(python().getPath(), SCRIPT.getAbsolutePath()));
         Map<String, File> byPath = new LinkedHashMap<>();
         for (File file : files) {
