@@ -10,17 +10,17 @@ import java.util.concurrent.Callable;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 
+import org.miron.cli.demo.Demo;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.demo.Demo;
 import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.skill.SkillTable;
 
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine;
 
 /**
  * `miron demo`: generates the intralogistics example and runs the whole loop on it in one JVM

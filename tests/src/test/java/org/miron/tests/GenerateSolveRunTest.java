@@ -14,17 +14,17 @@ import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.cli.MironCli;
+import org.miron.executor.ActionRegistry;
+import org.miron.executor.NodeStatus;
+import org.miron.executor.Tree;
+import org.miron.executor.TreeBuilder;
+import org.miron.executor.TreeContext;
+import org.miron.executor.skills.VariantSource;
 import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.MiniZincBackend;
 import org.miron.runtime.engine.SolveResult;
 import org.miron.runtime.engine.VarPoint;
-import org.miron.runtime.executor.ActionRegistry;
-import org.miron.runtime.executor.NodeStatus;
-import org.miron.runtime.executor.Tree;
-import org.miron.runtime.executor.TreeBuilder;
-import org.miron.runtime.executor.TreeContext;
-import org.miron.runtime.executor.VariantSource;
 
 
 /**

@@ -1,6 +1,5 @@
 package org.miron.runtime.skill;
 
-import org.miron.runtime.Contexts;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
@@ -12,13 +11,14 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
+import org.miron.executor.skills.SkillClient;
+import org.miron.executor.skills.SkillHandle;
+import org.miron.executor.skills.SkillRequest;
+import org.miron.executor.skills.SkillResult;
 import org.miron.runtime.Connect;
+import org.miron.runtime.Contexts;
 import org.miron.runtime.Json;
 import org.miron.runtime.LinkMonitor;
-import org.miron.runtime.executor.SkillClient;
-import org.miron.runtime.executor.SkillHandle;
-import org.miron.runtime.executor.SkillRequest;
-import org.miron.runtime.executor.SkillResult;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;

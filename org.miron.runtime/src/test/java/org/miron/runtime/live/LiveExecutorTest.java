@@ -16,6 +16,7 @@ import java.util.function.Predicate;
 import org.junit.After;
 import org.junit.Before;
 import org.junit.Test;
+import org.miron.executor.NodeStatus;
 import org.miron.runtime.BusProbe;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
@@ -23,7 +24,6 @@ import org.miron.runtime.Ports;
 import org.miron.runtime.broker.Broker;
 import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.bus.Topics;
-import org.miron.runtime.executor.NodeStatus;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
 
@@ -32,7 +32,8 @@ import org.miron.runtime.skill.SkillTable;
  * mock skill interface, and decisions published on the bus as the engine would publish them.
  */
 public class LiveExecutorTest {
-    private static final Path WOVEN = Path.of("src/test/resources/executor/intralogistics.ext.xml");
+    private static final Path WOVEN = Path.of(System.getProperty("miron.root", ".."))
+            .resolve("org.miron.executor/src/test/resources/executor/intralogistics.ext.xml");
 
     private final Endpoints endpoints = Ports.endpoints();
     private Broker broker;

@@ -1,0 +1,110 @@
+package org.miron.cli.demo;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.miron.executor.NodeStatus;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.broker.Broker;
+import org.miron.runtime.engine.Engine;
+import org.miron.runtime.engine.EngineOptions;
+import org.miron.runtime.engine.EngineStartException;
+import org.miron.runtime.live.LiveExecutor;
+import org.miron.runtime.player.Scenario;
+import org.miron.runtime.player.ScenarioPlayer;
+import org.miron.runtime.skill.SkillInterfaceMock;
+import org.miron.runtime.skill.SkillTable;
+
+/**
+ * The whole MIRoN loop in one JVM: broker, adaptation engine, mock skill interface, BT executor
+ * and a scenario player standing in for RoQME. The robot runs its mission over and over while the
+ * scenario plays; every perception, adaptation and skill is told on the console, and at the end a
+ * timeline report is written.
+ */
+public final class Demo {
+    /** What a run produced. */
+    public record Result(int adaptations, int parameterChanges, int missions, Path report, Path decisionLog) {
+    }
+
+    private final Path ioJson;
+    private final Path tree;
+    private final Scenario scenario;
+    private final SkillTable skills;
+    private final Path outDir;
+    private final Endpoints endpoints;
+    private final PrintWriter out;
+    private double timeScale = 1.0;
+    private String backend;
+    private long settleMs = 1500;
+
+    public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
+            PrintWriter out) {
+        this.ioJson = ioJson;
+        this.tree = tree;
+        this.scenario = scenario;
+        this.skills = skills;
+        this.outDir = outDir;
+        this.endpoints = endpoints;
+        this.out = out;
+    }
+
+    /** Plays the scenario faster (0.5) or slower (2.0); the skills keep their durations. */
+    public Demo timeScale(double scale) {
+        this.timeScale = scale;
+        return this;
+    }
+
+    /** The engine's backend by name (null: the engine's default). */
+    public Demo backend(String name) {
+        this.backend = name;
+        return this;
+    }
+
+    public Result run() throws EngineStartException, InterruptedException, java.io.IOException {
+        Path decisionLog = outDir.resolve("decisions.jsonl");
+        EngineOptions options = new EngineOptions(ioJson).endpoints(endpoints);
+        options.decisionLog = decisionLog;
+        options.backend = backend;
+        AtomicInteger missions = new AtomicInteger();
+        AtomicBoolean scenarioOver = new AtomicBoolean();
+        try (Broker broker = new Broker(endpoints).start();
+                SkillInterfaceMock skillInterface = new SkillInterfaceMock(endpoints.skill(), endpoints.skillEvents(),
+                        skills).start();
+                Engine engine = Engine.create(options)) {
+            Narrator narrator = new Narrator(out, engine.model());
+            try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
+                    .start();
+                    LiveExecutor executor = new LiveExecutor(endpoints).build(tree, narrator);
+                    ScenarioPlayer player = new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
+                narrator.setClock(recorder);
+                out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
+                        + executor.tree().formatVersion() + "; the engine decides with the " + engine.backendName()
+                        + " backend.");
+                engine.start();
+                Thread robot = new Thread(() -> {
+                    while (!scenarioOver.get()) {
+                        NodeStatus status = executor.run(Duration.ofMillis(50));
+                        if (status == NodeStatus.RUNNING) {
+                            break; // stopped
+                        }
+                        missions.incrementAndGet();
+                        narrator.say(recorder.elapsed(), "ROBOT ", "mission " + status + (scenarioOver.get() ? "" : ", starting again"));
+                    }
+                }, "demo-robot");
+                robot.start();
+                player.play(10_000);
+                Thread.sleep(settleMs);
+                scenarioOver.set(true);
+                executor.stop();
+                robot.join(5000);
+                Path report = new TimelineReport("MIRoN demo: " + engine.model().model(), recorder.events(),
+                        recorder.elapsed()).write(outDir.resolve("report.html"));
+                int adaptations = (int) recorder.events().stream().filter(e -> e.topic().equals("miron.decision"))
+                        .mapToLong(e -> e.body().path("changed").size()).sum();
+                return new Result(adaptations, skillInterface.history().size(), missions.get(), report, decisionLog);
+            }
+        }
+    }
+}

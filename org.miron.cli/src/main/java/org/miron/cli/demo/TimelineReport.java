@@ -1,0 +1,228 @@
+package org.miron.cli.demo;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.miron.runtime.bus.Topics;
+
+/**
+ * A self-contained HTML page (inline SVG, no scripts) that shows why the robot adapted: the QoS
+ * metrics, the contexts and the engine's decisions on one time axis, and a table of every
+ * adaptation with the inputs the engine saw when it made it.
+ */
+public final class TimelineReport {
+    private static final int WIDTH = 960;
+    private static final int LEFT = 150;
+    private static final int RIGHT = 20;
+    private static final String[] COLORS = { "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
+            "#e377c2", "#17becf" };
+
+    /** A value of one series at a time (ms). */
+    record Point(long at, JsonNode value) {
+    }
+
+    private final String title;
+    private final long end;
+    private final Map<String, List<Point>> metrics = new LinkedHashMap<>();
+    private final Map<String, List<Point>> contexts = new LinkedHashMap<>();
+    private final Map<String, List<Point>> decisions = new LinkedHashMap<>();
+    private final List<String[]> adaptations = new ArrayList<>();
+    private final List<Long> problems = new ArrayList<>();
+
+    public TimelineReport(String title, List<BusRecorder.Event> events, long end) {
+        this.title = title;
+        this.end = Math.max(1, end);
+        Map<String, String> applied = new LinkedHashMap<>();
+        for (BusRecorder.Event e : events) {
+            JsonNode body = e.body();
+            if (e.topic().equals(Topics.ESTIMATE)) {
+                add(metrics, body.path("name").asText(), e.at(), body.path("value"));
+            } else if (e.topic().equals(Topics.CONTEXT)) {
+                add(contexts, body.path("name").asText(), e.at(), body.path("value"));
+            } else if (e.topic().equals(Topics.DECISION)) {
+                body.path("decisions").fields().forEachRemaining(d -> add(decisions, d.getKey(), e.at(), d.getValue()));
+                for (JsonNode changed : body.path("changed")) {
+                    String vp = changed.asText();
+                    String now = body.path("decisions").path(vp).asText();
+                    adaptations.add(new String[] { seconds(e.at()), vp, applied.getOrDefault(vp, "(start)"), now,
+                            inputsOf(body.path("inputs")) });
+                    applied.put(vp, now);
+                }
+            } else if (e.topic().equals(Topics.STATUS) && body.path("state").asText().equals("degraded")) {
+                problems.add(e.at());
+            }
+        }
+    }
+
+    private static void add(Map<String, List<Point>> series, String name, long at, JsonNode value) {
+        if (!name.isEmpty() && !value.isMissingNode()) {
+            series.computeIfAbsent(name, k -> new ArrayList<>()).add(new Point(at, value));
+        }
+    }
+
+    private static String inputsOf(JsonNode inputs) {
+        List<String> parts = new ArrayList<>();
+        inputs.fields().forEachRemaining(f -> {
+            if (!f.getKey().endsWith("_known") && !f.getKey().contains("_input") && !f.getKey().endsWith("_current")) {
+                parts.add(f.getKey() + " = " + f.getValue().asText());
+            }
+        });
+        return String.join(", ", parts);
+    }
+
+    public Path write(Path file) throws IOException {
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        Files.writeString(file, html(), StandardCharsets.UTF_8);
+        return file;
+    }
+
+    String html() {
+        StringBuilder out = new StringBuilder();
+        out.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>")
+                .append(escape(title)).append("</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}"
+                        + "h2{margin-top:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;"
+                        + "text-align:left;font-size:13px}svg text{font-size:12px}</style></head><body>\n")
+                .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
+                .append(" adaptations in ").append(seconds(end)).append(" s")
+                .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");
+        out.append("<h2>QoS metrics</h2>\n").append(lineChart(metrics, 0, 1));
+        if (!contexts.isEmpty()) {
+            out.append("<h2>Contexts</h2>\n").append(lanes(contexts));
+        }
+        out.append("<h2>Decisions</h2>\n").append(lanes(decisions));
+        out.append("<h2>Adaptations</h2>\n<table><tr><th>time (s)</th><th>variation point</th><th>from</th><th>to</th>"
+                + "<th>inputs the engine saw</th></tr>\n");
+        for (String[] row : adaptations) {
+            out.append("<tr>");
+            for (String cell : row) {
+                out.append("<td>").append(escape(cell)).append("</td>");
+            }
+            out.append("</tr>\n");
+        }
+        return out.append("</table>\n</body></html>\n").toString();
+    }
+
+    /** Numeric series as step lines over a shared value axis. */
+    private String lineChart(Map<String, List<Point>> series, double min, double max) {
+        int height = 180;
+        StringBuilder svg = svgStart(height + 30);
+        axes(svg, height);
+        svg.append(text(LEFT - 8, 14, "end", fmt(max))).append(text(LEFT - 8, height, "end", fmt(min)));
+        int color = 0;
+        for (Map.Entry<String, List<Point>> s : series.entrySet()) {
+            String stroke = COLORS[color++ % COLORS.length];
+            StringBuilder path = new StringBuilder();
+            double lastY = -1;
+            for (Point p : s.getValue()) {
+                double y = 10 + (height - 10) * (1 - (p.value().asDouble() - min) / (max - min));
+                double x = x(p.at());
+                path.append(path.length() == 0 ? "M" : (" L" + fmt(x) + "," + fmt(lastY) + " L")).append(fmt(x)).append(',')
+                        .append(fmt(y));
+                lastY = y;
+            }
+            if (lastY >= 0) {
+                path.append(" L").append(fmt(x(end))).append(',').append(fmt(lastY));
+            }
+            svg.append("<path d=\"").append(path).append("\" fill=\"none\" stroke=\"").append(stroke)
+                    .append("\" stroke-width=\"2\"/>\n");
+            svg.append(text(10, 20 + 16 * (color - 1), "start", s.getKey(), stroke));
+        }
+        return problemMarks(svg, height).append("</svg>\n").toString();
+    }
+
+    /** One lane per series: the value written in a band that lasts until the next value. */
+    private String lanes(Map<String, List<Point>> series) {
+        int lane = 28;
+        StringBuilder svg = svgStart(series.size() * lane + 30);
+        int row = 0;
+        for (Map.Entry<String, List<Point>> s : series.entrySet()) {
+            int top = row * lane;
+            svg.append(text(LEFT - 8, top + 18, "end", s.getKey()));
+            Map<String, String> colorOf = new LinkedHashMap<>();
+            JsonNode previous = null;
+            for (Point p : s.getValue()) {
+                if (p.value().equals(previous)) {
+                    continue; // the same value again: its band already runs to the next change
+                }
+                previous = p.value();
+                String label = p.value().isNumber() ? fmt(p.value().asDouble()) : p.value().asText();
+                long until = nextChange(s.getValue(), p);
+                String fill = colorOf.computeIfAbsent(label, k -> COLORS[colorOf.size() % COLORS.length]);
+                svg.append(String.format(Locale.ROOT,
+                        "<rect x=\"%.1f\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\" fill-opacity=\"0.25\" stroke=\"%s\"/>\n",
+                        x(p.at()), top + 4, Math.max(1, x(until) - x(p.at())), lane - 6, fill, fill));
+                svg.append(text(x(p.at()) + 4, top + 18, "start", label));
+            }
+            row++;
+        }
+        axes(svg, series.size() * lane);
+        return svg.append("</svg>\n").toString();
+    }
+
+    /** When the value of {@code p} stops holding: the next point with another value, or the end. */
+    private long nextChange(List<Point> points, Point p) {
+        boolean after = false;
+        for (Point q : points) {
+            if (after && !q.value().equals(p.value())) {
+                return q.at();
+            }
+            after |= q == p;
+        }
+        return end;
+    }
+
+    private StringBuilder problemMarks(StringBuilder svg, int height) {
+        for (long at : problems) {
+            svg.append(String.format(Locale.ROOT, "<line x1=\"%.1f\" x2=\"%.1f\" y1=\"0\" y2=\"%d\" stroke=\"red\"/>\n",
+                    x(at), x(at), height));
+        }
+        return svg;
+    }
+
+    private StringBuilder svgStart(int height) {
+        return new StringBuilder(String.format(Locale.ROOT,
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n", WIDTH,
+                height, WIDTH, height));
+    }
+
+    private void axes(StringBuilder svg, int height) {
+        svg.append(String.format(Locale.ROOT, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#444\"/>\n", LEFT,
+                height + 2, WIDTH - RIGHT, height + 2));
+        long step = Math.max(1000, (end / 10 / 1000) * 1000);
+        for (long t = 0; t <= end; t += step) {
+            svg.append(text(x(t), height + 18, "middle", seconds(t) + " s"));
+        }
+    }
+
+    private double x(long at) {
+        return LEFT + (WIDTH - LEFT - RIGHT) * (double) Math.min(at, end) / end;
+    }
+
+    private static String text(double x, double y, String anchor, String text) {
+        return text(x, y, anchor, text, "#222");
+    }
+
+    private static String text(double x, double y, String anchor, String text, String color) {
+        return String.format(Locale.ROOT, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"%s\" fill=\"%s\">%s</text>\n", x, y,
+                anchor, color, escape(text));
+    }
+
+    private static String seconds(long ms) {
+        return String.format(Locale.ROOT, "%.1f", ms / 1000.0);
+    }
+
+    private static String fmt(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e9 ? Long.toString((long) v) : String.format(Locale.ROOT, "%.2f", v);
+    }
+
+    static String escape(String text) {
+        return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+    }
+}

@@ -1,0 +1,7 @@
+package org.miron.executor;
+
+/** Makes the runtime node of one action or condition of the tree. */
+@FunctionalInterface
+public interface ActionFactory {
+    Node create(ActionSpec spec);
+}

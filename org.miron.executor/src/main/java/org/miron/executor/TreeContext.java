@@ -1,0 +1,83 @@
+package org.miron.executor;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.miron.executor.trace.StatusListener;
+
+/** What every node of one tree shares: the clock, the status listeners and the loop guard. */
+public final class TreeContext {
+    /**
+     * Default bound on the child re-ticks a Repeat or Retry may do within one tick. BehaviorTree.CPP
+     * loops without bound, so Repeat(-1) over a child that succeeds at once never returns; past this
+     * bound we return RUNNING instead (keeping the count), and the next tick carries on.
+     */
+    public static final int DEFAULT_MAX_LOOPS_PER_TICK = 1000;
+
+    private final MillisClock clock;
+    private final int maxLoopsPerTick;
+    private final List<StatusListener> listeners = new CopyOnWriteArrayList<>();
+    private volatile boolean wakeUp;
+
+    public TreeContext() {
+        this(MillisClock.SYSTEM, DEFAULT_MAX_LOOPS_PER_TICK);
+    }
+
+    public TreeContext(MillisClock clock) {
+        this(clock, DEFAULT_MAX_LOOPS_PER_TICK);
+    }
+
+    public TreeContext(MillisClock clock, int maxLoopsPerTick) {
+        if (maxLoopsPerTick < 1) {
+            throw new IllegalArgumentException("maxLoopsPerTick must be at least 1");
+        }
+        this.clock = clock;
+        this.maxLoopsPerTick = maxLoopsPerTick;
+    }
+
+    public MillisClock clock() {
+        return clock;
+    }
+
+    public int maxLoopsPerTick() {
+        return maxLoopsPerTick;
+    }
+
+    /**
+     * A version-4 node asks for the tree to be ticked again at once (BT.CPP 4's emitWakeUpSignal:
+     * SequenceWithMemory, Repeat and RetryUntilSuccessful yield after each child that finished
+     * within one tick, and {@link Tree#tickRoot()} ticks again).
+     */
+    public void emitWakeUp() {
+        wakeUp = true;
+    }
+
+    /** Whether a wake-up was asked for since the last call, and forgets it. */
+    boolean takeWakeUp() {
+        boolean asked = wakeUp;
+        wakeUp = false;
+        return asked;
+    }
+
+    public void addListener(StatusListener listener) {
+        listeners.add(listener);
+    }
+
+    public void removeListener(StatusListener listener) {
+        listeners.remove(listener);
+    }
+
+    void fireStatusChanged(Node node, NodeStatus from, NodeStatus to) {
+        if (listeners.isEmpty()) {
+            return;
+        }
+        long now = clock.nowMillis();
+        for (StatusListener listener : listeners) {
+            try {
+                listener.statusChanged(now, node, from, to);
+            } catch (RuntimeException e) {
+                // a broken monitor must not stop the robot's behaviour; say so and carry on
+                System.err.println("status listener " + listener + " failed on " + node.path() + ": " + e);
+            }
+        }
+    }
+}

@@ -1,9 +1,0 @@
-package org.miron.runtime.executor;
-
-/** Source of time in milliseconds; injectable so that Timeout can be tested without waiting. */
-@FunctionalInterface
-public interface MillisClock {
-    MillisClock SYSTEM = System::currentTimeMillis;
-
-    long nowMillis();
-}

@@ -1,7 +1,0 @@
-package org.miron.runtime.executor;
-
-/** A Java action (or condition) that finishes within its tick: SUCCESS or FAILURE, never RUNNING. */
-@FunctionalInterface
-public interface SyncAction {
-    NodeStatus tick(Ports ports);
-}
