@@ -52,23 +52,9 @@ import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtFormats;
 import org.miron.bt.util.BtTrees;
-import org.miron.executor.actions.AlwaysFailureNode;
-import org.miron.executor.actions.AlwaysSuccessNode;
-import org.miron.executor.actions.SetBlackboardNode;
-import org.miron.executor.controls.IfThenElseNode;
-import org.miron.executor.controls.OrderedNode;
-import org.miron.executor.controls.ParallelNode;
-import org.miron.executor.controls.ReactiveNode;
-import org.miron.executor.controls.SwitchNode;
-import org.miron.executor.controls.WhileDoElseNode;
-import org.miron.executor.decorators.BlackboardCheckNode;
-import org.miron.executor.decorators.DelayNode;
-import org.miron.executor.decorators.ForceNode;
-import org.miron.executor.decorators.InverterNode;
-import org.miron.executor.decorators.KeepRunningUntilFailureNode;
-import org.miron.executor.decorators.LoopNode;
-import org.miron.executor.decorators.SubTreeNode;
-import org.miron.executor.decorators.TimeoutNode;
+import org.miron.executor.actions.*;
+import org.miron.executor.controls.*;
+import org.miron.executor.decorators.*;
 
 /**
  * Turns a BT model (EMF, from the BT language) into a runnable {@link Tree}: one runtime node per
