@@ -8,7 +8,7 @@ import java.util.Locale;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.engine.Binding;
 import org.miron.runtime.engine.IoModel;
-import org.miron.runtime.engine.VarPoint;
+import org.miron.runtime.engine.VariationPoint;
 import org.miron.runtime.executor.Node;
 import org.miron.runtime.executor.NodeStatus;
 import org.miron.runtime.executor.SkillActionNode;
@@ -50,7 +50,7 @@ final class Narrator implements StatusListener {
 
     /** Where a decision goes, from the varpoint's binding. */
     private String where(String varpoint) {
-        VarPoint vp = model.varpoint(varpoint).orElse(null);
+        VariationPoint vp = model.varpoint(varpoint).orElse(null);
         if (vp == null || vp.binding() == null) {
             return "";
         }
