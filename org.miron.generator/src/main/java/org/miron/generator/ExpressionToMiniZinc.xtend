@@ -88,7 +88,7 @@ class ExpressionToMiniZinc {
 			val m = mentions
 			'''(if «translate(e.condition, m)» then «translate(e.ifTrue, m)» else «translate(e.ifFalse, m)» endif)'''.toString
 		}
-		override caseVariableRef(VariableRef e) { reference(e, mentions) }
+		override caseVariableRef(VariableRef e) { reference(e) }
 		override caseBeliefExpression(BeliefExpression e) {
 			if (e.belief instanceof Property) metric(e.belief as Property) else unsupported(e, "only properties have a MiniZinc parameter (metric_...)")
 		}
@@ -183,7 +183,7 @@ class ExpressionToMiniZinc {
 		}
 	}
 
-	def private String reference(VariableRef e, Mentions m) {
+	def private String reference(VariableRef e) {
 		if (e.variable === null) {
 			return unsupported(e, "rules may read contexts, properties, params with a default and varpoints; 'null' is none of them")
 		}

@@ -15,8 +15,15 @@ import org.miron.dsl.miron.BtBinding;
 import org.miron.dsl.miron.InsertionType;
 
 /**
- * Weaves an enum varpoint bound to a tree node: a Switch over {vp_sel} with one subtree call per
- * non-preset literal, placed in, before or after the target (docs/generators.md).
+ * Weaves an enum varpoint bound to a tree node (docs/generators.md): a Switch over {vp_sel} with
+ * one subtree call per non-preset literal and a default child, the original target for `in`,
+ * AlwaysSuccess for `before`/`after`.
+ *  - When `in` replaces a subtree call, each variant gets that call's port wiring (its attributes
+ *    but name), so a variant sees the same inputs as the nominal subtree.
+ *  - `before`/`after` insert the Switch next to the target in its parent; where the parent takes
+ *    exactly one child or counts its children (a tree, a decorator, a Switch) target and Switch
+ *    are wrapped in a Sequence instead, which keeps the tree loadable and the cases aligned.
+ *  - BehaviorTree.CPP 3 stops at Switch6, so more cases nest Switches through the default child.
  */
 final class VariantSwitches {
     private final WovenNodes nodes;
