@@ -20,7 +20,7 @@ public final class AdaptationModel {
      * One consequence of a rule: a constraint on varpoints, guarded by their overrides; in
      * MiniZinc and as the expression tree of the io.json decision section (ExpressionToTree).
      */
-    public record Consequence(String constraint, JsonNode tree, Set<SampledVarpoint> varpoints) {
+    public record Consequence(String constraint, JsonNode tree, Set<SampledVariationPoint> varpoints) {
     }
 
     /** A rule in MiniZinc, its condition also as an expression tree. */
@@ -34,7 +34,7 @@ public final class AdaptationModel {
     /** Base name of the outputs: name.mzn, name.dzn, name.io.json, name.ext.xml. */
     public final String name;
     public final WeightPolicy weights;
-    public final List<SampledVarpoint> varpoints = new ArrayList<>();
+    public final List<SampledVariationPoint> varpoints = new ArrayList<>();
     public final List<TranslatedRule> rules = new ArrayList<>();
     public final Set<Property> properties = new LinkedHashSet<>();
     public final Set<Context> contexts = new LinkedHashSet<>();

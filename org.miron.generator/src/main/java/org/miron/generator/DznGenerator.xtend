@@ -26,7 +26,7 @@ class DznGenerator {
 		«ENDFOR»
 	'''
 
-	def private array(SampledVarpoint vp, List<String> items) {
+	def private array(SampledVariationPoint vp, List<String> items) {
 		val lines = <String>newArrayList
 		for (var i = 0; i < items.size; i += PER_LINE) {
 			lines += items.subList(i, Math.min(items.size, i + PER_LINE)).join(", ")

@@ -28,6 +28,10 @@ import org.miron.dsl.roqme.EventType
 import org.miron.dsl.roqme.NumericType
 import org.miron.dsl.roqme.TimeType
 import org.miron.dsl.util.Types
+import org.miron.dsl.miron.util.MironSwitch
+import org.miron.dsl.roqme.util.RoqmeSwitch
+import org.miron.dsl.roqme.Variable
+import org.eclipse.emf.ecore.util.ComposedSwitch
 
 /**
  * Translates the RoQME expressions of MIRoN rules to MiniZinc. Contexts and properties become
@@ -52,13 +56,13 @@ class ExpressionToMiniZinc {
 	/** What one expression reads: the rule guards use it. */
 	static class Mentions {
 		public val Set<Context> contexts = new LinkedHashSet
-		public val Set<SampledVarpoint> varpoints = new LinkedHashSet
+		public val Set<SampledVariationPoint> varpoints = new LinkedHashSet
 	}
 
 	/** Largest number of value combinations a comparison is tabulated over. */
 	public static val TABLE_LIMIT = 250_000L
 
-	val Map<VariationPoint, SampledVarpoint> varpoints
+	val Map<VariationPoint, SampledVariationPoint> varpoints
 	val List<GenerationError> errors
 	/** Inside a tabulated comparison: varpoints read it are referred to by their index (vp_i). */
 	var boolean tabulating
@@ -68,25 +72,68 @@ class ExpressionToMiniZinc {
 	public val Set<Property> properties = new LinkedHashSet
 	public val Set<Context> contexts = new LinkedHashSet
 
-	new(Map<VariationPoint, SampledVarpoint> varpoints, List<GenerationError> errors) {
+	new(Map<VariationPoint, SampledVariationPoint> varpoints, List<GenerationError> errors) {
 		this.varpoints = varpoints
 		this.errors = errors
 	}
 
+	/**
+	 * Expressions by class, on the switch EMF generates from roqme.ecore: an expression class with
+	 * no case here reaches defaultCase, which reports it at its position.
+	 */
+	val RoqmeSwitch<String> expressions = new RoqmeSwitch<String>() {
+		override caseBinaryExpression(BinaryExpression e) { binary(e, mentions).toString }
+		override caseUnaryExpression(UnaryExpression e) { unary(e, mentions).toString }
+		override caseConditionalExpression(ConditionalExpression e) {
+			val m = mentions
+			'''(if «translate(e.condition, m)» then «translate(e.ifTrue, m)» else «translate(e.ifFalse, m)» endif)'''.toString
+		}
+		override caseVariableRef(VariableRef e) { reference(e) }
+		override caseBeliefExpression(BeliefExpression e) {
+			if (e.belief instanceof Property) metric(e.belief as Property) else unsupported(e, "only properties have a MiniZinc parameter (metric_...)")
+		}
+		override caseNumericValue(NumericValue e) { Numbers.mzn(e.value) }
+		override caseBooleanValue(BooleanValue e) { String.valueOf(e.value) }
+		override caseEventValue(EventValue e) { "true" }
+		override caseEnumValue(EnumValue e) { enumIndex(e) }
+		override caseFunctionCall(FunctionCall e) { function(e, mentions).toString }
+		override defaultCase(EObject e) { unsupported(e as Expression, UNSUPPORTED_EXPRESSION) }
+	}
+
+	/**
+	 * The variable a reference reads, by class: RoQME's (properties, contexts, params) and MIRoN's
+	 * varpoints, on the two generated switches; any other variable reaches defaultCase.
+	 */
+	val ComposedSwitch<String> variables = new ComposedSwitch<String>(#[
+		new RoqmeSwitch<String>() {
+			override caseProperty(Property p) { metric(p) }
+			override caseContext(Context c) { context(c) }
+			override caseParam(Param p) { param(p) }
+			override defaultCase(EObject v) { unknownVariable(v) }
+		},
+		new MironSwitch<String>() {
+			override caseVariationPoint(VariationPoint v) { varpoint(v) }
+			override defaultCase(EObject v) { unknownVariable(v) }
+		}
+	])
+
+	/** What the expression being translated reads (the Mentions of translate). */
+	var Mentions mentions
+	/** The reference being translated: where a variable it cannot read is reported. */
+	var VariableRef referenceInTranslation
+
+	static val UNSUPPORTED_EXPRESSION = "rules may use numbers, booleans, enum literals, contexts, properties, varpoints, arithmetic, comparisons, and/or/not, ?: and abs/sqrt/exp/pow/min/max"
+
 	def String translate(Expression e, Mentions m) {
-		switch e {
-			BinaryExpression: binary(e, m).toString
-			UnaryExpression: unary(e, m).toString
-			ConditionalExpression: '''(if «translate(e.condition, m)» then «translate(e.ifTrue, m)» else «translate(e.ifFalse, m)» endif)'''.toString
-			VariableRef: reference(e, m)
-			BeliefExpression:
-				if (e.belief instanceof Property) metric(e.belief as Property) else unsupported(e, "only properties have a MiniZinc parameter (metric_...)")
-			NumericValue: Numbers.mzn(e.value)
-			BooleanValue: String.valueOf(e.value)
-			EventValue: "true"
-			EnumValue: enumIndex(e)
-			FunctionCall: function(e, m).toString
-			default: unsupported(e, "rules may use numbers, booleans, enum literals, contexts, properties, varpoints, arithmetic, comparisons, and/or/not, ?: and abs/sqrt/exp/pow/min/max")
+		if (e === null) {
+			return unsupported(null, UNSUPPORTED_EXPRESSION)
+		}
+		val outer = mentions
+		mentions = m
+		try {
+			expressions.doSwitch(e)
+		} finally {
+			mentions = outer
 		}
 	}
 
@@ -136,37 +183,48 @@ class ExpressionToMiniZinc {
 		}
 	}
 
-	def private String reference(VariableRef e, Mentions m) {
-		val v = e.variable
-		switch v {
-			Property:
-				metric(v)
-			Context: {
-				val type = Types.dataType(v as EObject)
-				if (type instanceof TimeType || type === null) {
-					return unsupported(e, "context '" + v.name + "' has a type without MiniZinc parameter (time)")
-				}
-				contexts += v
-				m.contexts += v
-				Names.context(v)
-			}
-			VariationPoint: {
-				val vp = varpoints.get(v)
-				if (vp === null) {
-					return unsupported(e, "varpoint '" + v.name + "' has no value table")
-				}
-				m.varpoints += vp
-				if (vp.isEnum) index(vp)
-				else if (Types.dataType(v as EObject) instanceof BooleanType) '''(«index(vp)» = 1)'''
-				else value(vp)
-			}
-			Param: {
-				val value = v.initializedTo
-				if (value === null) unsupported(e, "param '" + v.name + "' has no default value") else translate(value, m)
-			}
-			default:
-				unsupported(e, "rules may read contexts, properties, params with a default and varpoints; '" + v?.name + "' is none of them")
+	def private String reference(VariableRef e) {
+		if (e.variable === null) {
+			return unsupported(e, "rules may read contexts, properties, params with a default and varpoints; 'null' is none of them")
 		}
+		val outer = referenceInTranslation
+		referenceInTranslation = e
+		try {
+			variables.doSwitch(e.variable)
+		} finally {
+			referenceInTranslation = outer
+		}
+	}
+
+	def private String context(Context v) {
+		val type = Types.dataType(v as EObject)
+		if (type instanceof TimeType || type === null) {
+			return unsupported(referenceInTranslation, "context '" + v.name + "' has a type without MiniZinc parameter (time)")
+		}
+		contexts += v
+		mentions.contexts += v
+		Names.context(v)
+	}
+
+	def private String varpoint(VariationPoint v) {
+		val vp = varpoints.get(v)
+		if (vp === null) {
+			return unsupported(referenceInTranslation, "varpoint '" + v.name + "' has no value table")
+		}
+		mentions.varpoints += vp
+		if (vp.isEnum) index(vp)
+		else if (Types.dataType(v as EObject) instanceof BooleanType) '''(«index(vp)» = 1)'''.toString
+		else value(vp)
+	}
+
+	def private String param(Param v) {
+		val value = v.initializedTo
+		if (value === null) unsupported(referenceInTranslation, "param '" + v.name + "' has no default value") else translate(value, mentions)
+	}
+
+	def private String unknownVariable(EObject v) {
+		val name = if (v instanceof Variable) v.name
+		unsupported(referenceInTranslation, "rules may read contexts, properties, params with a default and varpoints; '" + name + "' is none of them")
 	}
 
 	def private metric(Property p) {
@@ -236,13 +294,13 @@ class ExpressionToMiniZinc {
 	}
 
 	/** The varpoints an expression reads (through parameters' default values too), in order of mention. */
-	def private Set<SampledVarpoint> varpointsIn(EObject e) {
-		val found = new LinkedHashSet<SampledVarpoint>
+	def private Set<SampledVariationPoint> varpointsIn(EObject e) {
+		val found = new LinkedHashSet<SampledVariationPoint>
 		collect(e, found)
 		found
 	}
 
-	def private void collect(EObject o, Set<SampledVarpoint> found) {
+	def private void collect(EObject o, Set<SampledVariationPoint> found) {
 		if (o instanceof VariableRef) {
 			val v = o.variable
 			if (v instanceof VariationPoint) {
@@ -258,12 +316,12 @@ class ExpressionToMiniZinc {
 	}
 
 	/** The decision, or the comprehension's index while tabulating. */
-	def private index(SampledVarpoint vp) {
+	def private index(SampledVariationPoint vp) {
 		if (tabulating) vp.name + "_i" else vp.decision
 	}
 
 	/** The value of a numeric varpoint. */
-	def private value(SampledVarpoint vp) {
+	def private value(SampledVariationPoint vp) {
 		'''«vp.x»[«index(vp)»]'''.toString
 	}
 

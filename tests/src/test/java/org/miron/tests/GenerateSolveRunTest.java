@@ -24,7 +24,7 @@ import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.MiniZincBackend;
 import org.miron.runtime.engine.SolveResult;
-import org.miron.runtime.engine.VarPoint;
+import org.miron.runtime.engine.VariationPoint;
 
 
 /**
@@ -63,7 +63,7 @@ public class GenerateSolveRunTest {
             SolveResult result = backend.solve(params);
             assertTrue(result.status() + ": " + result.message(), result.solved());
             Map<String, String> chosen = new java.util.LinkedHashMap<>();
-            for (VarPoint vp : io.varpoints()) {
+            for (VariationPoint vp : io.varpoints()) {
                 chosen.put(vp.name(), vp.values().get(result.decisions().get(vp.decision())).asText());
             }
             return chosen;

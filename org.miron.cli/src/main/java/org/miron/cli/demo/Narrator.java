@@ -12,7 +12,7 @@ import org.miron.executor.trace.StatusListener;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.engine.Binding;
 import org.miron.runtime.engine.IoModel;
-import org.miron.runtime.engine.VarPoint;
+import org.miron.runtime.engine.VariationPoint;
 
 /**
  * Tells on the console, as it happens, what the demo's robot perceives (RoQME inputs), what the
@@ -50,7 +50,7 @@ final class Narrator implements StatusListener {
 
     /** Where a decision goes, from the varpoint's binding. */
     private String where(String varpoint) {
-        VarPoint vp = model.varpoint(varpoint).orElse(null);
+        VariationPoint vp = model.varpoint(varpoint).orElse(null);
         if (vp == null || vp.binding() == null) {
             return "";
         }

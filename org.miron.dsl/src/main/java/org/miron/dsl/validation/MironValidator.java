@@ -19,7 +19,7 @@ import org.miron.dsl.util.Imports;
  * .bt/.roqme/.miron files with distinct aliases here; varpoint types, bindings and rules in the
  * composed check sets.
  */
-@ComposedChecks(validators = { VarpointTypeChecks.class, BindingChecks.class, RuleChecks.class })
+@ComposedChecks(validators = { VariationPointTypeChecks.class, BindingChecks.class, RuleChecks.class })
 public class MironValidator extends AbstractMironValidator {
 
     private static final MironPackage M = MironPackage.eINSTANCE;

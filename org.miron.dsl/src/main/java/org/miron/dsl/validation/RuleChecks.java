@@ -80,7 +80,7 @@ public class RuleChecks extends CheckSet {
         if ((n.getLower() != null && v < n.getLower()) || (n.getUpper() != null && v > n.getUpper())) {
             error("varpoint '" + name + "' can never be " + fmt(v) + ": it is outside its range " + range(n), e, feature,
                     VALUE_OUT_OF_RANGE);
-        } else if (n.getPrecision() != null && n.getPrecision() > 0 && !VarpointTypeChecks.onGrid(v, n)) {
+        } else if (n.getPrecision() != null && n.getPrecision() > 0 && !VariationPointTypeChecks.onGrid(v, n)) {
             error("varpoint '" + name + "' can never be " + fmt(v) + ": it is not on its precision grid "
                     + fmt(n.getLower() == null ? 0 : n.getLower()) + " + k*" + fmt(n.getPrecision()), e, feature, VALUE_OFF_GRID);
         }

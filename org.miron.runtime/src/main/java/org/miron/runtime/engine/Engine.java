@@ -195,7 +195,7 @@ public final class Engine implements AutoCloseable {
     }
 
     private String outOfRange(SolveResult r) {
-        for (VarPoint vp : model.varpoints()) {
+        for (VariationPoint vp : model.varpoints()) {
             int idx = r.decisions().get(vp.decision());
             if (idx < 0 || idx >= vp.values().size()) {
                 return vp.decision() + " = " + idx + " is not an index of " + vp.name() + "'s values";
@@ -209,7 +209,7 @@ public final class Engine implements AutoCloseable {
         ArrayNode changed = Json.MAPPER.createArrayNode();
         ObjectNode decisions = Json.object();
         Map<String, Object> values = new LinkedHashMap<>();
-        for (VarPoint vp : model.varpoints()) {
+        for (VariationPoint vp : model.varpoints()) {
             int idx = r.decisions().get(vp.decision());
             JsonNode value = vp.values().get(idx);
             decisions.set(vp.name(), value);
@@ -223,7 +223,7 @@ public final class Engine implements AutoCloseable {
         // The state first, then the outputs: they leave at once, and whoever sees one may ask.
         appliedValues = values;
         for (JsonNode name : changed) {
-            VarPoint vp = model.varpoint(name.asText()).orElseThrow();
+            VariationPoint vp = model.varpoint(name.asText()).orElseThrow();
             send(vp, (JsonNode) values.get(vp.name()));
         }
         entry.put("seq", seq);
@@ -233,7 +233,7 @@ public final class Engine implements AutoCloseable {
         bus.publishRetained(Topics.DECISION, Topics.DECISION, Json.write(entry));
     }
 
-    private void send(VarPoint vp, JsonNode value) {
+    private void send(VariationPoint vp, JsonNode value) {
         String type = vp.bindingType();
         if (type.equals("bt") || type.equals("btport")) {
             ObjectNode msg = Json.object();

@@ -91,7 +91,7 @@ public final class InputDecoder {
     }
 
     private void override(String name, JsonNode msg) throws BadInputException {
-        VarPoint vp = model.varpoint(name).orElseThrow(
+        VariationPoint vp = model.varpoint(name).orElseThrow(
                 () -> new BadInputException(BadInputException.Kind.UNKNOWN, "unknown varpoint " + name));
         if (!msg.has("value")) {
             throw new BadInputException(BadInputException.Kind.MALFORMED, "override of " + name + " has no 'value'");

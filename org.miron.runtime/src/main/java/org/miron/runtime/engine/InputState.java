@@ -24,7 +24,7 @@ public final class InputState {
                 params.put(in.known(), Boolean.FALSE);
             }
         }
-        for (VarPoint vp : model.varpoints()) {
+        for (VariationPoint vp : model.varpoints()) {
             params.put(vp.input(), Boolean.FALSE);
             params.put(vp.inputValue(), 0);
             params.put(vp.current(), -1);
@@ -45,13 +45,13 @@ public final class InputState {
     }
 
     /** Pins a varpoint to a value index, or releases it with {@code null}. */
-    public synchronized void setOverride(VarPoint vp, Integer index) {
+    public synchronized void setOverride(VariationPoint vp, Integer index) {
         set(vp.input(), index != null);
         set(vp.inputValue(), index == null ? 0 : index);
     }
 
     /** Records the applied configuration; not an input change, so it schedules no solve. */
-    public synchronized void setCurrent(VarPoint vp, int index) {
+    public synchronized void setCurrent(VariationPoint vp, int index) {
         params.put(vp.current(), index);
     }
 

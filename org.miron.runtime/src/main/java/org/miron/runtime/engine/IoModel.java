@@ -19,7 +19,7 @@ import org.miron.runtime.Json;
  * @param decision the structured {@code decision} section (the native backend's input), null in
  *                 files generated before it existed
  */
-public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, List<VarPoint> varpoints,
+public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, List<VariationPoint> varpoints,
         String weights, JsonNode decision) {
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final List<String> ROQME_TYPES = List.of("boolean", "event", "enum", "number");
@@ -62,7 +62,7 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
             JsonNode in = inputNodes.get(i);
             inputs.add(within("inputs[" + i + "]", () -> input(in)));
         }
-        List<VarPoint> vps = new ArrayList<>();
+        List<VariationPoint> vps = new ArrayList<>();
         JsonNode varpointNodes = array(root, "varpoints");
         for (int i = 0; i < varpointNodes.size(); i++) {
             vps.add(varpoint(varpointNodes.get(i), "varpoints[" + i + "]"));
@@ -89,7 +89,7 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
                 identifier(in, "param"), type, known, initial);
     }
 
-    private static VarPoint varpoint(JsonNode vp, String at) {
+    private static VariationPoint varpoint(JsonNode vp, String at) {
         Binding binding = within(at + ".binding", () -> binding(vp.get("binding")));
         return within(at, () -> varpoint(vp, binding));
     }
@@ -103,7 +103,7 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         }
     }
 
-    private static VarPoint varpoint(JsonNode vp, Binding binding) {
+    private static VariationPoint varpoint(JsonNode vp, Binding binding) {
         String name = identifier(vp, "name");
         List<JsonNode> values = new ArrayList<>();
         vp.path("values").forEach(values::add);
@@ -124,7 +124,7 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         if (preset != null && (preset < 0 || preset >= values.size())) {
             throw new IllegalArgumentException("varpoint " + name + " has preset " + preset + " outside its values");
         }
-        return new VarPoint(name, kind, List.copyOf(values), preset, identifier(vp, "decision"),
+        return new VariationPoint(name, kind, List.copyOf(values), preset, identifier(vp, "decision"),
                 identifier(vp, "input"), identifier(vp, "inputValue"), identifier(vp, "current"), binding);
     }
 
@@ -222,7 +222,7 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         return value;
     }
 
-    public Optional<VarPoint> varpoint(String name) {
+    public Optional<VariationPoint> varpoint(String name) {
         return varpoints.stream().filter(v -> v.name().equals(name)).findFirst();
     }
 

@@ -93,7 +93,7 @@ final class MiniZincOutput {
                     + status + ")", millis);
         }
         Map<String, Integer> decisions = new LinkedHashMap<>();
-        for (VarPoint vp : model.varpoints()) {
+        for (VariationPoint vp : model.varpoints()) {
             JsonNode v = lastSolution.get(vp.decision());
             if (v == null || !v.canConvertToInt() || !v.isIntegralNumber()) {
                 return SolveResult.failed(SolveResult.Status.ERROR,

@@ -50,7 +50,7 @@ final class NativeModel {
         }
         maximize = "maximize".equals(d.path("objective").asText());
         weightIsNeed = !"metric".equals(io.weights());
-        List<VarPoint> vps = io.varpoints();
+        List<VariationPoint> vps = io.varpoints();
         varpointCount = vps.size();
         decisionNames = new String[varpointCount];
         sizes = new int[varpointCount];
@@ -68,7 +68,7 @@ final class NativeModel {
         inputValueSlot = new int[varpointCount];
         currentSlot = new int[varpointCount];
         for (int v = 0; v < varpointCount; v++) {
-            VarPoint vp = vps.get(v);
+            VariationPoint vp = vps.get(v);
             vpIndex.put(vp.name(), v);
             decisionNames[v] = vp.decision();
             sizes[v] = vp.values().size();

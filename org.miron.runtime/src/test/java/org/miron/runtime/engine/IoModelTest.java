@@ -29,10 +29,10 @@ public class IoModelTest {
         assertEquals("testbot", m.model());
         assertTrue(Files.isRegularFile(m.mzn()));
         assertEquals(4, m.inputs().size());
-        VarPoint task = m.varpoint("task").get();
+        VariationPoint task = m.varpoint("task").get();
         assertEquals(3, (int) task.preset());
         assertEquals("bt", task.bindingType());
-        VarPoint v = m.varpoint("maxVelocity").get();
+        VariationPoint v = m.varpoint("maxVelocity").get();
         assertEquals(91, v.values().size());
         assertEquals("transvel", v.binding().text("parameter"));
         assertNull(v.preset());

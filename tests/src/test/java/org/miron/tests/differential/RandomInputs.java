@@ -5,7 +5,7 @@ import java.util.Map;
 import java.util.Random;
 import org.miron.runtime.engine.InputSpec;
 import org.miron.runtime.engine.IoModel;
-import org.miron.runtime.engine.VarPoint;
+import org.miron.runtime.engine.VariationPoint;
 
 /**
  * Random engine inputs for a model: metrics (often on the 0.1 grid the rules compare with, to hit
@@ -38,7 +38,7 @@ final class RandomInputs {
             };
             params.put(in.param(), value);
         }
-        for (VarPoint vp : io.varpoints()) {
+        for (VariationPoint vp : io.varpoints()) {
             int n = vp.values().size();
             boolean pinned = random.nextInt(6) == 0;
             params.put(vp.input(), pinned);

@@ -14,7 +14,7 @@ import org.miron.dsl.roqme.Property;
  * A variation point reduced to what the MiniZinc model needs: its value table (the decision
  * &lt;vp&gt;_var is a 0-based index into it) and one utility table per property its impacts name.
  */
-public final class SampledVarpoint {
+public final class SampledVariationPoint {
     public enum Kind {
         /** Enum literals (labels); the value of index i is i. */
         ENUM,
@@ -36,7 +36,7 @@ public final class SampledVarpoint {
     /** Utility in [0,100] of each value, per property, in order of first mention. */
     public final Map<Property, double[]> utilities = new LinkedHashMap<>();
 
-    public SampledVarpoint(VariationPoint varpoint, Kind kind) {
+    public SampledVariationPoint(VariationPoint varpoint, Kind kind) {
         this.varpoint = varpoint;
         this.name = varpoint.getName();
         this.kind = kind;

@@ -23,7 +23,7 @@ import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.util.Names;
 
 /** Types of variation points: one preset per BT enum, samples in range and on the grid, impacts. */
-public class VarpointTypeChecks extends CheckSet {
+public class VariationPointTypeChecks extends CheckSet {
 
     private static final MironPackage M = MironPackage.eINSTANCE;
     private static final RoqmePackage R = RoqmePackage.eINSTANCE;

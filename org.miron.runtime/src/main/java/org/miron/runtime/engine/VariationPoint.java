@@ -11,7 +11,7 @@ import java.util.List;
  * @param preset  index of the design-time choice, or null
  * @param binding how a decision is applied, null for decision-only varpoints
  */
-public record VarPoint(String name, String kind, List<JsonNode> values, Integer preset, String decision,
+public record VariationPoint(String name, String kind, List<JsonNode> values, Integer preset, String decision,
         String input, String inputValue, String current, Binding binding) {
 
     /** Index of a value given from outside (override), or -1 when it is not one of {@code values}. */
