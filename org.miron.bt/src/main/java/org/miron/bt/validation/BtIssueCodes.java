@@ -140,6 +140,8 @@ public final class BtIssueCodes {
     public static final String REACTIVE_EXPLICIT_CHILD = "bt.reactive-explicit-child";
     /** A boolean port whose value is not true/false/1/0 (as BT.CPP converts it). */
     public static final String NOT_A_BOOLEAN = "bt.not-a-boolean";
+    /** A port taking a node status (Precondition's else, a Loop's if_empty) given another value. */
+    public static final String BAD_STATUS = "bt.bad-status";
     /** A Loop queue whose literal elements do not convert to the loop's type. */
     public static final String BAD_LOOP_QUEUE = "bt.bad-loop-queue";
 
