@@ -2,7 +2,6 @@ package org.miron.bt.validation;
 
 import static org.miron.bt.validation.BtIssueCodes.*;
 
-import java.util.ArrayList;
 import java.util.List;
 
 import org.eclipse.emf.ecore.EPackage;
@@ -11,8 +10,6 @@ import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.EValidatorRegistrar;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BtPackage;
-import org.miron.bt.bt.ControlNode;
-import org.miron.bt.bt.DecoratorNode;
 import org.miron.bt.bt.LeafNode;
 import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.TreeNode;
@@ -25,6 +22,7 @@ import org.miron.bt.nodes.PortModel;
 import org.miron.bt.nodes.PortType;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtFormats;
+import org.miron.bt.util.BtTrees;
 
 /**
  * What the catalogue of built-ins (org.miron.bt.nodes) says of a node, checked: the ports its
@@ -115,7 +113,7 @@ public class BtBuiltinValidator extends AbstractDeclarativeValidator {
         if (model == null) {
             return;
         }
-        List<TreeNode> children = children(node);
+        List<TreeNode> children = BtTrees.children(node);
         Children rule = model.children();
         if (rule.admits(children.size())) {
             return;
@@ -142,23 +140,6 @@ public class BtBuiltinValidator extends AbstractDeclarativeValidator {
                 error(message, children.get(rule.max()), null, CONDITIONAL_CHILD_COUNT);
             }
         }
-    }
-
-    /** The child elements of a node, whatever metamodel class the grammar gave it. */
-    static List<TreeNode> children(TreeNode node) {
-        if (node instanceof ControlNode control) {
-            return control.getNodes();
-        }
-        List<TreeNode> children = new ArrayList<>();
-        if (node instanceof DecoratorNode decorator) {
-            if (decorator.getNode() != null) {
-                children.add(decorator.getNode());
-            }
-            children.addAll(decorator.getSurplus());
-        } else if (node instanceof LeafNode leaf) {
-            children.addAll(leaf.getSurplus());
-        }
-        return children;
     }
 
     static boolean isBlackboardPointer(String value) {

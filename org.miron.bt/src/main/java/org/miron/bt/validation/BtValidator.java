@@ -29,8 +29,6 @@ import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.nodes.BuiltinNodes;
 import org.miron.bt.nodes.NodeCatalogue;
-import org.miron.bt.nodes.NodeKind;
-import org.miron.bt.nodes.NodeModel;
 import org.miron.bt.resource.BtXmlFiles;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
@@ -178,19 +176,13 @@ public class BtValidator extends AbstractBtValidator {
         }
         String article = "Action".equals(node.getTag()) || "AlwaysSuccess".equals(node.getTag())
                 || "AlwaysFailure".equals(node.getTag()) ? "an " : "a ";
-        if (isRegisteredForm(node)) {
+        if (BtTrees.isExplicitForm(node)) {
             error(article + node.getTag() + " cannot have children", node.getSurplus().get(0), null,
                     LEAF_WITH_CHILDREN);
         } else {
             warning(article + node.getTag() + " cannot have children: BehaviorTree.CPP 3 ignores them",
                     node.getSurplus().get(0), null, LEAF_WITH_CHILDREN);
         }
-    }
-
-    /** Action, Condition, Control, Decorator: the element names a registered node by its ID (the catalogue's explicit forms). */
-    private static boolean isRegisteredForm(TreeNode node) {
-        NodeModel model = NodeCatalogue.find(node.getTag()).orElse(null);
-        return model != null && model.explicitForm() && model.kind() != NodeKind.SUBTREE;
     }
 
     @Check
@@ -275,7 +267,7 @@ public class BtValidator extends AbstractBtValidator {
     /** Explicit forms name the registered node by ID: Action, Condition, Control, Decorator. */
     @Check
     public void checkRegisteredId(TreeNode node) {
-        if (isRegisteredForm(node) && node.attribute(BuiltinNodes.ID) == null) {
+        if (BtTrees.isExplicitForm(node) && node.attribute(BuiltinNodes.ID) == null) {
             error(node.getTag() + " needs an ID attribute naming the registered node", node, BT.getTreeNode_Tag(),
                     NODE_WITHOUT_ID);
         }
