@@ -211,6 +211,9 @@ public final class BuiltinNodes {
                         .explicit().counterpart("SubTree", false).ports(
                         input(ID, STRING, "the tree").mandatory(),
                         input(V3_AUTOREMAP, BOOL, "If true, all the ports with the same name will be remapped")
+                                .withDefault("false"),
+                        // Not among its providedPorts: Groot and the seed's trees write it, the loader ignores it.
+                        input(SHARED_BLACKBOARD, BOOL, "ignored: a SubTreePlus always has its own blackboard")
                                 .withDefault("false")),
                 NodeModel.of("Action", ACTION, BOTH, Children.NONE,
                         "An action the application registered, named by its ID.").explicit()
