@@ -239,10 +239,10 @@ public class BtValidator extends AbstractBtValidator {
 
     @Check
     public void checkRetry(RetryUntilSuccess node) {
-        if ("RetryUntilSuccesful".equals(node.getTag()) && BtFormats.versionOf(node) == 3) {
-            warning("RetryUntilSuccesful is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load "
-                    + "RetryUntilSuccessful", node, BT.getTreeNode_Tag(), RETRY_OLD_SPELLING,
-                    "RetryUntilSuccessful");
+        String tag = NodeCatalogue.require(node.getTag()).tag(); // the spelling of 3.7 and later
+        if (!tag.equals(node.getTag()) && BtFormats.versionOf(node) == 3) {
+            warning(node.getTag() + " is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load " + tag, node,
+                    BT.getTreeNode_Tag(), RETRY_OLD_SPELLING, tag);
         }
     }
 

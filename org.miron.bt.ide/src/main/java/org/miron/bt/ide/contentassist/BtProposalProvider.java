@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 
 import org.eclipse.xtext.CrossReference;
 import org.eclipse.xtext.Keyword;
@@ -21,6 +22,8 @@ import org.miron.bt.ide.nodes.BuiltinAttributes;
 import org.miron.bt.ide.nodes.NodeDeclaration;
 import org.miron.bt.ide.nodes.NodeDeclarations;
 import org.miron.bt.nodes.NodeCatalogue;
+import org.miron.bt.nodes.NodeKind;
+import org.miron.bt.nodes.NodeModel;
 import org.miron.bt.nodes.PortModel;
 import org.miron.bt.util.BtFormats;
 import org.miron.bt.util.BtTrees;
@@ -33,8 +36,13 @@ import org.miron.bt.util.BtTrees;
  * and the values of attributes with a fixed set of them.
  */
 public class BtProposalProvider extends IdeContentProposalProvider {
-    private static final Set<String> EXPLICIT_FORMS = Set.of("Action", "Condition", "Control", "Decorator");
-    private static final Set<String> SUBTREE_FORMS = Set.of("SubTree", "SubTreePlus");
+    /** Action, Condition, Control, Decorator: their ID names a registered node. */
+    private static final Set<String> EXPLICIT_FORMS = NodeCatalogue.all().stream()
+            .filter(n -> n.explicitForm() && n.kind() != NodeKind.SUBTREE).map(NodeModel::tag)
+            .collect(Collectors.toUnmodifiableSet());
+    /** SubTree, SubTreePlus: their ID names a tree. */
+    private static final Set<String> SUBTREE_FORMS = NodeCatalogue.all().stream()
+            .filter(n -> n.kind() == NodeKind.SUBTREE).map(NodeModel::tag).collect(Collectors.toUnmodifiableSet());
     private static final Pattern FORMAT = Pattern.compile("<root\\b[^>]*\\b" + BtFormats.ATTRIBUTE + "\\s*=\\s*[\"'](\\d+)");
 
     @Override
