@@ -10,9 +10,11 @@ import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.EValidatorRegistrar;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BtPackage;
+import org.miron.bt.bt.IfThenElse;
 import org.miron.bt.bt.LeafNode;
 import org.miron.bt.bt.Switch;
 import org.miron.bt.bt.TreeNode;
+import org.miron.bt.bt.WhileDoElse;
 import org.miron.bt.nodes.BuiltinNodes;
 import org.miron.bt.nodes.Children;
 import org.miron.bt.nodes.NodeCatalogue;
@@ -130,14 +132,16 @@ public class BtBuiltinValidator extends AbstractDeclarativeValidator {
             error(tag + " with " + cases + " cases needs " + rule.min()
                     + " children (one per case and a default last), it has " + children.size(), node,
                     BT.getTreeNode_Tag(), SWITCH_CHILD_COUNT);
-        } else if (model.kind() == NodeKind.CONTROL) {
+        } else {
             // IfThenElse and WhileDoElse: a condition, a then-branch and an optional else-branch.
-            String message = tag + " needs " + rule.describe() + " children (condition, then, optional else), it has "
-                    + children.size();
+            boolean conditional = node instanceof IfThenElse || node instanceof WhileDoElse;
+            String message = tag + " needs " + rule.describe() + " children"
+                    + (conditional ? " (condition, then, optional else)" : "") + ", it has " + children.size();
+            String code = conditional ? CONDITIONAL_CHILD_COUNT : CHILD_COUNT;
             if (children.size() < rule.min()) {
-                error(message, node, BT.getTreeNode_Tag(), CONDITIONAL_CHILD_COUNT);
+                error(message, node, BT.getTreeNode_Tag(), code);
             } else {
-                error(message, children.get(rule.max()), null, CONDITIONAL_CHILD_COUNT);
+                error(message, children.get(rule.max()), null, code);
             }
         }
     }

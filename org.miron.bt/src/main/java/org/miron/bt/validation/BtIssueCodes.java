@@ -62,6 +62,8 @@ public final class BtIssueCodes {
     public static final String CONDITIONAL_CHILD_COUNT = "bt.conditional-child-count";
     /** A decorator (built-in or declared in TreeNodesModel) without exactly one child. */
     public static final String DECORATOR_CHILD_COUNT = "bt.decorator-child-count";
+    /** Any other built-in whose number of children its catalogue entry does not admit. */
+    public static final String CHILD_COUNT = "bt.child-count";
     /**
      * A leaf written with children: Action and Condition (errors, as in BehaviorTree.CPP), the
      * built-in leaves (warnings: BehaviorTree.CPP 3 loads them and drops the children), or a node
