@@ -16,6 +16,13 @@
  * once, when {@link org.miron.bt.nodes.NodeCatalogue} is first used, from records that cannot
  * change. CatalogueGrammarTest fails when the grammar's element keywords and the table disagree.
  *
+ * <p>For code that builds or writes trees: {@code NodeCatalogue.builtin(tag, version)} says whether
+ * an element is a built-in of that version and gives its entry; {@code NodeModel.tag()} folds other
+ * spellings (RetryUntilSuccesful) into one key for a per-version factory table; {@code children()}
+ * and {@code ports(version)} with {@code PortModel.required()} and {@code accepts(literal)} are the
+ * load-time checks; the port-name constants of {@link org.miron.bt.nodes.BuiltinNodes} replace
+ * hand-typed names such as "num_cycles".
+ *
  * <p>Adding a built-in node: one entry in {@link org.miron.bt.nodes.BuiltinNodes} (and its keyword
  * and rule in Bt.xtext, which the test demands), and its executor class in the executor's builder
  * table.
