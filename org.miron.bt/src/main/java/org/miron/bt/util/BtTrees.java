@@ -17,8 +17,13 @@ import org.eclipse.emf.ecore.util.EcoreUtil;
 import org.eclipse.xtext.EcoreUtil2;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
+import org.miron.bt.bt.ControlNode;
+import org.miron.bt.bt.DecoratorNode;
+import org.miron.bt.bt.LeafNode;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.bt.TreeNodesModel;
+import org.miron.bt.nodes.NodeCatalogue;
+import org.miron.bt.nodes.NodeKind;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 
 /** Navigation over a BT file and the files it includes. */
@@ -168,9 +173,29 @@ public final class BtTrees {
         return trees;
     }
 
-    /** {@code <Action ID="x">}, {@code <Condition ID="x">}, {@code <Control ID="x">}, {@code <Decorator ID="x">}. */
+    /**
+     * {@code <Action ID="x">}, {@code <Condition ID="x">}, {@code <Control ID="x">}, {@code <Decorator ID="x">}:
+     * the catalogue's explicit forms that name a registered node (not a tree).
+     */
     public static boolean isExplicitForm(TreeNode node) {
-        String tag = node.getTag();
-        return "Action".equals(tag) || "Condition".equals(tag) || "Control".equals(tag) || "Decorator".equals(tag);
+        return NodeCatalogue.find(node.getTag()).filter(n -> n.explicitForm() && n.kind() != NodeKind.SUBTREE)
+                .isPresent();
+    }
+
+    /** The child elements of a node, whatever metamodel class the grammar gave it (a decorator's surplus too). */
+    public static List<TreeNode> children(TreeNode node) {
+        if (node instanceof ControlNode control) {
+            return control.getNodes();
+        }
+        List<TreeNode> children = new ArrayList<>();
+        if (node instanceof DecoratorNode decorator) {
+            if (decorator.getNode() != null) {
+                children.add(decorator.getNode());
+            }
+            children.addAll(decorator.getSurplus());
+        } else if (node instanceof LeafNode leaf) {
+            children.addAll(leaf.getSurplus());
+        }
+        return children;
     }
 }

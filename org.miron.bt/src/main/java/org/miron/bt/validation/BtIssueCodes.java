@@ -62,6 +62,8 @@ public final class BtIssueCodes {
     public static final String CONDITIONAL_CHILD_COUNT = "bt.conditional-child-count";
     /** A decorator (built-in or declared in TreeNodesModel) without exactly one child. */
     public static final String DECORATOR_CHILD_COUNT = "bt.decorator-child-count";
+    /** Any other built-in whose number of children its catalogue entry does not admit. */
+    public static final String CHILD_COUNT = "bt.child-count";
     /**
      * A leaf written with children: Action and Condition (errors, as in BehaviorTree.CPP), the
      * built-in leaves (warnings: BehaviorTree.CPP 3 loads them and drops the children), or a node
@@ -140,6 +142,8 @@ public final class BtIssueCodes {
     public static final String REACTIVE_EXPLICIT_CHILD = "bt.reactive-explicit-child";
     /** A boolean port whose value is not true/false/1/0 (as BT.CPP converts it). */
     public static final String NOT_A_BOOLEAN = "bt.not-a-boolean";
+    /** A port taking a node status (Precondition's else, a Loop's if_empty) given another value. */
+    public static final String BAD_STATUS = "bt.bad-status";
     /** A Loop queue whose literal elements do not convert to the loop's type. */
     public static final String BAD_LOOP_QUEUE = "bt.bad-loop-queue";
 

@@ -10,17 +10,15 @@ import org.eclipse.xtext.validation.Check;
 import org.eclipse.xtext.validation.EValidatorRegistrar;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BtPackage;
-import org.miron.bt.bt.EntryUpdatedDecorator;
 import org.miron.bt.bt.Loop;
 import org.miron.bt.bt.Parallel;
 import org.miron.bt.bt.Precondition;
-import org.miron.bt.bt.RunOnce;
 import org.miron.bt.bt.Script;
 import org.miron.bt.bt.ScriptCondition;
-import org.miron.bt.bt.Sleep;
-import org.miron.bt.bt.Subtree;
 import org.miron.bt.bt.TreeNode;
-import org.miron.bt.bt.WasEntryUpdated;
+import org.miron.bt.nodes.BuiltinNodes;
+import org.miron.bt.nodes.NodeCatalogue;
+import org.miron.bt.nodes.PortType;
 import org.miron.bt.script.BtScripts;
 import org.miron.bt.script.ParsedScript;
 import org.miron.bt.script.ScriptChecks;
@@ -57,10 +55,11 @@ public class BtV4Validator extends AbstractDeclarativeValidator {
         if (!isV4(node)) {
             return;
         }
+        // A missing code or if is BtBuiltinValidator's (a required port in the catalogue).
         if (node instanceof Script || node instanceof ScriptCondition) {
-            checkScript(node, "code", true);
+            checkScript(node, BuiltinNodes.CODE);
         } else if (node instanceof Precondition) {
-            checkScript(node, "if", true);
+            checkScript(node, BuiltinNodes.IF);
         }
         for (Attribute attribute : node.getAttributes()) {
             if (BtVersions.SCRIPT_DIRECTIVES.contains(attribute.getName())) {
@@ -69,15 +68,11 @@ public class BtV4Validator extends AbstractDeclarativeValidator {
         }
     }
 
-    private void checkScript(TreeNode node, String port, boolean required) {
+    private void checkScript(TreeNode node, String port) {
         Attribute attribute = BtAttributes.find(node.getAttributes(), port);
-        if (attribute == null) {
-            if (required) {
-                error(node.getTag() + " needs attribute " + port, node, BT.getTreeNode_Tag(), MISSING_ATTRIBUTE, port);
-            }
-            return;
+        if (attribute != null) {
+            checkScript(attribute);
         }
-        checkScript(attribute);
     }
 
     private void checkScript(Attribute attribute) {
@@ -104,42 +99,13 @@ public class BtV4Validator extends AbstractDeclarativeValidator {
     }
 
     @Check
-    public void checkSleep(Sleep node) {
-        Attribute msec = BtAttributes.find(node.getAttributes(), "msec");
-        if (msec != null && !isBlackboardPointer(msec.getValue()) && !isUnsigned(msec.getValue())) {
-            error("msec must be a non-negative integer, not '" + msec.getValue() + "'", msec, BT.getAttribute_Value(),
-                    NOT_AN_INTEGER);
-        }
-    }
-
-    @Check
-    public void checkRunOnce(RunOnce node) {
-        checkBoolean(node, "then_skip");
-    }
-
-    @Check
-    public void checkSubtree(Subtree node) {
-        if (isV4(node)) {
-            checkBoolean(node, "_autoremap");
-        }
-    }
-
-    @Check
-    public void checkEntry(TreeNode node) {
-        if (node instanceof WasEntryUpdated || node instanceof EntryUpdatedDecorator) {
-            requireAttribute(node, "entry");
-        }
-    }
-
-    @Check
     public void checkLoop(Loop node) {
-        Attribute queue = BtAttributes.find(node.getAttributes(), "queue");
-        if (queue == null) {
-            requireAttribute(node, "queue");
-            return;
+        Attribute queue = BtAttributes.find(node.getAttributes(), BuiltinNodes.QUEUE);
+        if (queue == null || !isV4(node)) {
+            return; // missing: BtBuiltinValidator; in version 3 LoopInt is the application's node
         }
         String value = queue.getValue();
-        if (isBlackboardPointer(value) || value.isEmpty() || node.getTag().equals("LoopString")) {
+        if (BtBuiltinValidator.isBlackboardPointer(value) || value.isEmpty() || node.getTag().equals("LoopString")) {
             return;
         }
         for (String element : value.split(";", -1)) {
@@ -151,78 +117,37 @@ public class BtV4Validator extends AbstractDeclarativeValidator {
         }
     }
 
+    /** Whether a queue element converts to the type of the loop's value port. */
     private static boolean converts(String element, String tag) {
-        switch (tag) {
-        case "LoopInt":
-            return element.matches("[-+]?\\d+");
-        case "LoopDouble":
-            return element.matches("[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?");
-        case "LoopBool":
-            return BtVersions.BOOLEANS.contains(element);
-        default:
-            return true;
-        }
+        return elementType(tag).accepts(element);
+    }
+
+    private static PortType elementType(String tag) {
+        return NodeCatalogue.require(tag).requirePort(BuiltinNodes.VALUE).type();
     }
 
     private static String typeName(String tag) {
-        return tag.equals("LoopInt") ? "an integer" : tag.equals("LoopDouble") ? "a number" : "a boolean";
+        return switch (elementType(tag)) {
+        case INT -> "an integer";
+        case DOUBLE -> "a number";
+        default -> "a boolean";
+        };
     }
 
     /** Version 4 Parallel: success_count and failure_count, optional, counted like the version-3 thresholds. */
     @Check
     public void checkParallel(Parallel node) {
-        if (!isV4(node)) {
-            return;
+        if (!isV4(node) || node.getTag().equals("ParallelAll")) {
+            return; // max_failures: an integer (BtBuiltinValidator), any value fits
         }
-        if (node.getTag().equals("ParallelAll")) {
-            checkInteger(node, "max_failures");
-            return;
-        }
-        for (String port : List.of("success_count", "failure_count")) {
-            Integer value = checkInteger(node, port);
+        for (String port : List.of(BuiltinNodes.SUCCESS_COUNT, BuiltinNodes.FAILURE_COUNT)) {
+            Attribute attribute = BtAttributes.find(node.getAttributes(), port);
+            Integer value = attribute == null ? null : BtValidator.literalInteger(attribute.getValue());
             int children = node.getNodes().size();
             if (value != null && children > 0 && (value > children || value < -children || value == 0)) {
-                error(port + " " + value + " does not fit a Parallel with " + children + " children",
-                        BtAttributes.find(node.getAttributes(), port), BT.getAttribute_Value(), PARALLEL_THRESHOLD);
+                error(port + " " + value + " does not fit a Parallel with " + children + " children", attribute,
+                        BT.getAttribute_Value(), PARALLEL_THRESHOLD);
             }
         }
-    }
-
-    private Integer checkInteger(TreeNode node, String port) {
-        Attribute attribute = BtAttributes.find(node.getAttributes(), port);
-        if (attribute == null || isBlackboardPointer(attribute.getValue())) {
-            return null;
-        }
-        try {
-            return Integer.parseInt(attribute.getValue().trim());
-        } catch (NumberFormatException e) {
-            error(port + " must be an integer, not '" + attribute.getValue() + "'", attribute, BT.getAttribute_Value(),
-                    NOT_AN_INTEGER);
-            return null;
-        }
-    }
-
-    private void checkBoolean(TreeNode node, String port) {
-        Attribute attribute = BtAttributes.find(node.getAttributes(), port);
-        if (attribute != null && !isBlackboardPointer(attribute.getValue())
-                && !BtVersions.BOOLEANS.contains(attribute.getValue())) {
-            error(port + " must be true or false, not '" + attribute.getValue() + "'", attribute,
-                    BT.getAttribute_Value(), NOT_A_BOOLEAN);
-        }
-    }
-
-    private void requireAttribute(TreeNode node, String name) {
-        if (node.attribute(name) == null) {
-            error(node.getTag() + " needs attribute " + name, node, BT.getTreeNode_Tag(), MISSING_ATTRIBUTE, name);
-        }
-    }
-
-    private static boolean isUnsigned(String value) {
-        return value.trim().matches("\\d+");
-    }
-
-    private static boolean isBlackboardPointer(String value) {
-        String trimmed = value.trim();
-        return (trimmed.startsWith("{") || trimmed.startsWith("${")) && trimmed.endsWith("}");
     }
 }

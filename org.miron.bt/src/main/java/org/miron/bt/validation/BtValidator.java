@@ -5,7 +5,6 @@ import static org.miron.bt.validation.BtIssueCodes.*;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
 import org.eclipse.emf.common.util.URI;
 import org.eclipse.emf.ecore.resource.Resource;
@@ -16,29 +15,20 @@ import org.eclipse.xtext.validation.ComposedChecks;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
-import org.miron.bt.bt.BlackboardCheckDouble;
-import org.miron.bt.bt.BlackboardCheckInt;
-import org.miron.bt.bt.BlackboardCheckString;
 import org.miron.bt.bt.BtPackage;
-import org.miron.bt.bt.Condition;
 import org.miron.bt.bt.CustomControl;
 import org.miron.bt.bt.Delay;
-import org.miron.bt.bt.ControlNode;
-import org.miron.bt.bt.DecoratorNode;
 import org.miron.bt.bt.FallbackStar;
 import org.miron.bt.bt.ForeignElement;
-import org.miron.bt.bt.IfThenElse;
 import org.miron.bt.bt.Import;
 import org.miron.bt.bt.LeafNode;
 import org.miron.bt.bt.Parallel;
-import org.miron.bt.bt.Repeat;
 import org.miron.bt.bt.RetryUntilSuccess;
-import org.miron.bt.bt.SetBlackboard;
 import org.miron.bt.bt.SubtreeNode;
 import org.miron.bt.bt.Switch;
-import org.miron.bt.bt.Timeout;
 import org.miron.bt.bt.TreeNode;
-import org.miron.bt.bt.WhileDoElse;
+import org.miron.bt.nodes.BuiltinNodes;
+import org.miron.bt.nodes.NodeCatalogue;
 import org.miron.bt.resource.BtXmlFiles;
 import org.miron.bt.scoping.BtGlobalScopeProvider;
 import org.miron.bt.util.BtAttributes;
@@ -52,7 +42,7 @@ import org.miron.bt.util.Suggestions;
  * sees every mistake with its position. Where a file is valid but will not load in current
  * BehaviorTree.CPP 3 releases, a warning says what to write instead.
  */
-@ComposedChecks(validators = { BtVersionValidator.class, BtV4Validator.class })
+@ComposedChecks(validators = { BtVersionValidator.class, BtV4Validator.class, BtBuiltinValidator.class })
 public class BtValidator extends AbstractBtValidator {
 
     private static final BtPackage BT = BtPackage.eINSTANCE;
@@ -186,7 +176,7 @@ public class BtValidator extends AbstractBtValidator {
         }
         String article = "Action".equals(node.getTag()) || "AlwaysSuccess".equals(node.getTag())
                 || "AlwaysFailure".equals(node.getTag()) ? "an " : "a ";
-        if (node instanceof org.miron.bt.bt.Action || node instanceof Condition) {
+        if (BtTrees.isExplicitForm(node)) {
             error(article + node.getTag() + " cannot have children", node.getSurplus().get(0), null,
                     LEAF_WITH_CHILDREN);
         } else {
@@ -196,87 +186,45 @@ public class BtValidator extends AbstractBtValidator {
     }
 
     @Check
-    public void checkControlChildren(ControlNode node) {
-        if (node.getNodes().isEmpty() && !isConditional(node)) {
-            error(node.getTag() + " needs at least one child", node, BT.getTreeNode_Tag(), CONTROL_WITHOUT_CHILDREN);
-        }
-    }
-
-    private static boolean isConditional(ControlNode node) {
-        return node instanceof IfThenElse || node instanceof WhileDoElse;
-    }
-
-    /** IfThenElse and WhileDoElse: a condition, a then-branch and an optional else-branch. */
-    @Check
-    public void checkConditional(ControlNode node) {
-        if (!isConditional(node)) {
-            return;
-        }
-        int children = node.getNodes().size();
-        if (children < 2) {
-            error(node.getTag() + " needs 2 or 3 children (condition, then, optional else), it has " + children,
-                    node, BT.getTreeNode_Tag(), CONDITIONAL_CHILD_COUNT);
-        } else if (children > 3) {
-            error(node.getTag() + " needs 2 or 3 children (condition, then, optional else), it has " + children,
-                    node.getNodes().get(3), null, CONDITIONAL_CHILD_COUNT);
-        }
-    }
-
-    @Check
-    public void checkDecoratorChild(DecoratorNode node) {
-        if (node.getNode() == null) {
-            error(node.getTag() + " needs exactly one child, it has none", node, BT.getTreeNode_Tag(),
-                    DECORATOR_CHILD_COUNT);
-        } else if (!node.getSurplus().isEmpty()) {
-            error(node.getTag() + " needs exactly one child, it has " + (1 + node.getSurplus().size()),
-                    node.getSurplus().get(0), null, DECORATOR_CHILD_COUNT);
-        }
-    }
-
-    @Check
     public void checkParallel(Parallel node) {
         if (BtFormats.versionOf(node) != 3 || "ParallelAll".equals(node.getTag())) {
             return; // BtV4Validator; ParallelAll is an error in version 3
         }
-        int children = node.getNodes().size();
-        Integer success = checkInteger(node, "success_threshold", true, Integer.MIN_VALUE);
-        Integer failure = checkInteger(node, "failure_threshold", false, Integer.MIN_VALUE);
-        checkThreshold(node, "success_threshold", success, children);
-        checkThreshold(node, "failure_threshold", failure, children);
+        checkThreshold(node, BuiltinNodes.SUCCESS_THRESHOLD);
+        checkThreshold(node, BuiltinNodes.FAILURE_THRESHOLD);
     }
 
-    private void checkThreshold(Parallel node, String port, Integer value, int children) {
+    /** Whether a literal threshold fits the children (BtBuiltinValidator reports one that is no integer). */
+    private void checkThreshold(Parallel node, String port) {
+        Attribute attribute = attribute(node.getAttributes(), port);
+        Integer value = attribute == null ? null : literalInteger(attribute.getValue());
+        int children = node.getNodes().size();
         // Negative thresholds count from the number of children (-1 = all), as in BehaviorTree.CPP.
         if (value != null && children > 0 && (value > children || value < -children || value == 0)) {
-            error(port + " " + value + " does not fit a Parallel with " + children + " children",
-                    attribute(node.getAttributes(), port), BT.getAttribute_Value(), PARALLEL_THRESHOLD);
+            error(port + " " + value + " does not fit a Parallel with " + children + " children", attribute,
+                    BT.getAttribute_Value(), PARALLEL_THRESHOLD);
         }
     }
 
+    /** A literal integer, or null for a blackboard pointer or a value that is not one. */
+    static Integer literalInteger(String value) {
+        try {
+            return Integer.parseInt(value.trim());
+        } catch (NumberFormatException e) {
+            return null;
+        }
+    }
+
+    /** case_k beyond N (the required ports and the N+1 children are BtBuiltinValidator's, from the catalogue). */
     @Check
     public void checkSwitch(Switch node) {
-        int cases = Integer.parseInt(node.getTag().substring("Switch".length()));
-        if (node.attribute("variable") == null) {
-            error(node.getTag() + " needs a variable attribute, e.g. variable=\"{choice}\"", node, BT.getTreeNode_Tag(),
-                    SWITCH_WITHOUT_VARIABLE);
-        }
-        for (int k = 1; k <= cases; k++) {
-            if (node.attribute("case_" + k) == null) {
-                error(node.getTag() + " needs attribute case_" + k, node, BT.getTreeNode_Tag(), SWITCH_MISSING_CASE,
-                        "case_" + k);
-            }
-        }
+        int cases = NodeCatalogue.require(node.getTag()).children().min() - 1;
         for (Attribute attribute : node.getAttributes()) {
             String name = attribute.getName();
-            if (name.startsWith("case_") && !isCaseOf(name, cases)) {
+            if (name.startsWith(BuiltinNodes.CASE_PREFIX) && !isCaseOf(name, cases)) {
                 error(node.getTag() + " has only " + cases + " cases: " + name + " is not one of case_1..case_"
                         + cases, attribute, BT.getAttribute_Name(), SWITCH_EXTRA_CASE, name);
             }
-        }
-        if (!node.getNodes().isEmpty() && node.getNodes().size() != cases + 1) {
-            error(node.getTag() + " with " + cases + " cases needs " + (cases + 1)
-                    + " children (one per case and a default last), it has " + node.getNodes().size(),
-                    node, BT.getTreeNode_Tag(), SWITCH_CHILD_COUNT);
         }
     }
 
@@ -290,28 +238,16 @@ public class BtValidator extends AbstractBtValidator {
     }
 
     @Check
-    public void checkRepeat(Repeat node) {
-        checkInteger(node, "num_cycles", true, -1);
-    }
-
-    @Check
     public void checkRetry(RetryUntilSuccess node) {
-        checkInteger(node, "num_attempts", true, -1);
-        if ("RetryUntilSuccesful".equals(node.getTag()) && BtFormats.versionOf(node) == 3) {
-            warning("RetryUntilSuccesful is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load "
-                    + "RetryUntilSuccessful", node, BT.getTreeNode_Tag(), RETRY_OLD_SPELLING,
-                    "RetryUntilSuccessful");
+        String tag = NodeCatalogue.require(node.getTag()).tag(); // the spelling of 3.7 and later
+        if (!tag.equals(node.getTag()) && BtFormats.versionOf(node) == 3) {
+            warning(node.getTag() + " is the BehaviorTree.CPP 3.5-3.6 spelling; 3.7 and later only load " + tag, node,
+                    BT.getTreeNode_Tag(), RETRY_OLD_SPELLING, tag);
         }
     }
 
     @Check
-    public void checkTimeout(Timeout node) {
-        checkInteger(node, "msec", true, 0);
-    }
-
-    @Check
     public void checkDelay(Delay node) {
-        checkInteger(node, "delay_msec", true, 0);
         if (BtFormats.versionOf(node) == 3) {
             warning("Delay needs BehaviorTree.CPP 3.8 or later; earlier 3.x releases do not register it", node,
                     BT.getTreeNode_Tag(), DELAY_NEEDS_3_8);
@@ -328,35 +264,10 @@ public class BtValidator extends AbstractBtValidator {
                 "Fallback", "ReactiveFallback");
     }
 
-    @Check
-    public void checkBlackboardCheck(DecoratorNode node) {
-        if (node instanceof BlackboardCheckInt || node instanceof BlackboardCheckDouble
-                || node instanceof BlackboardCheckString) {
-            requireAttribute(node, "value_A");
-            requireAttribute(node, "value_B");
-            String mismatch = node.attribute("return_on_mismatch");
-            // Empty (as Groot writes unset ports): BehaviorTree.CPP falls back to FAILURE.
-            if (mismatch != null && !mismatch.isEmpty() && !isBlackboardPointer(mismatch)
-                    && !Set.of("SUCCESS", "FAILURE", "RUNNING").contains(mismatch)) {
-                error("return_on_mismatch must be SUCCESS, FAILURE or RUNNING, not '" + mismatch + "'",
-                        attribute(node.getAttributes(), "return_on_mismatch"), BT.getAttribute_Value(),
-                        BAD_RETURN_ON_MISMATCH);
-            }
-        }
-    }
-
-    @Check
-    public void checkSetBlackboard(SetBlackboard node) {
-        requireAttribute(node, "value");
-        requireAttribute(node, "output_key");
-    }
-
     /** Explicit forms name the registered node by ID: Action, Condition, Control, Decorator. */
     @Check
     public void checkRegisteredId(TreeNode node) {
-        boolean explicit = "Action".equals(node.getTag()) || node instanceof Condition
-                || "Control".equals(node.getTag()) || "Decorator".equals(node.getTag());
-        if (explicit && node.attribute("ID") == null) {
+        if (BtTrees.isExplicitForm(node) && node.attribute(BuiltinNodes.ID) == null) {
             error(node.getTag() + " needs an ID attribute naming the registered node", node, BT.getTreeNode_Tag(),
                     NODE_WITHOUT_ID);
         }
@@ -448,43 +359,6 @@ public class BtValidator extends AbstractBtValidator {
                         DUPLICATE_ATTRIBUTE, attribute.getName());
             }
         }
-    }
-
-    /** Checks an integer port; a blackboard pointer {key} is read at tick time and accepted. */
-    private Integer checkInteger(TreeNode node, String port, boolean required, int min) {
-        Attribute attribute = attribute(node.getAttributes(), port);
-        if (attribute == null) {
-            if (required) {
-                error(node.getTag() + " needs attribute " + port, node, BT.getTreeNode_Tag(), MISSING_ATTRIBUTE, port);
-            }
-            return null;
-        }
-        String value = attribute.getValue().trim();
-        if (isBlackboardPointer(value)) {
-            return null;
-        }
-        try {
-            int number = Integer.parseInt(value);
-            if (number < min) {
-                error(port + " must be at least " + min + ", not " + number, attribute, BT.getAttribute_Value(),
-                        INTEGER_TOO_SMALL, String.valueOf(min));
-            }
-            return number;
-        } catch (NumberFormatException e) {
-            error(port + " must be an integer, not '" + attribute.getValue() + "'", attribute, BT.getAttribute_Value(),
-                    NOT_AN_INTEGER);
-            return null;
-        }
-    }
-
-    private void requireAttribute(TreeNode node, String name) {
-        if (node.attribute(name) == null) {
-            error(node.getTag() + " needs attribute " + name, node, BT.getTreeNode_Tag(), MISSING_ATTRIBUTE, name);
-        }
-    }
-
-    private static boolean isBlackboardPointer(String value) {
-        return (value.startsWith("{") || value.startsWith("${")) && value.endsWith("}");
     }
 
     private static Attribute attribute(List<Attribute> attributes, String name) {

@@ -17,6 +17,7 @@ import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.server.Document;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
 import org.miron.bt.bt.BTModel;
+import org.miron.bt.nodes.NodeCatalogue;
 
 /**
  * Quick fixes of all three languages, made from a diagnostic's issue code and issue data (see
@@ -56,13 +57,16 @@ public class IssueDataCodeActions implements ICodeActionService2 {
             Map.entry("bt.v4-only-attribute", Fix.REPLACE));
 
     /**
-     * Replacements the issue data names but a rename would get wrong: SubTreePlus → SubTree also
-     * changes how ports are remapped, BlackboardCheck → Precondition takes other ports, and in
-     * version 3 __autoremap exists on SubTreePlus only. The message tells what to write instead.
+     * Replacements the issue data names but a rename would get wrong: in version 3 __autoremap
+     * exists on SubTreePlus only. For elements the catalogue says which replacements are renames
+     * (SubTreePlus → SubTree also changes how ports are remapped, BlackboardCheck → Precondition
+     * takes other ports); the message tells what to write instead.
      */
     private static final Map<String, Set<String>> NOT_A_RENAME = Map.of(
-            "bt.v3-only-element", Set.of("SubTree", "Precondition"),
             "bt.v4-only-attribute", Set.of("__autoremap"));
+
+    /** The codes whose data is the other version's element, a rename only when the catalogue says so. */
+    private static final Set<String> VERSION_ELEMENTS = Set.of("bt.v3-only-element", "bt.v4-only-element");
 
     @Override
     public List<Either<Command, CodeAction>> getCodeActions(Options options) {
@@ -87,6 +91,10 @@ public class IssueDataCodeActions implements ICodeActionService2 {
             List<String> data = IssueData.of(diagnostic.getData());
             if (fix != null) {
                 data.removeAll(NOT_A_RENAME.getOrDefault(diagnostic.getCode().getLeft(), Set.of()));
+                if (VERSION_ELEMENTS.contains(diagnostic.getCode().getLeft()) && document != null) {
+                    String tag = text(document, diagnostic.getRange());
+                    data.removeIf(instead -> !NodeCatalogue.isRename(tag, instead));
+                }
             }
             if (fix == null || data.isEmpty() || document == null) {
                 continue;

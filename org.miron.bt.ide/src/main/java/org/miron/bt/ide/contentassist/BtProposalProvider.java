@@ -6,6 +6,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
 
 import org.eclipse.xtext.CrossReference;
 import org.eclipse.xtext.Keyword;
@@ -14,20 +17,33 @@ import org.eclipse.xtext.ide.editor.contentassist.ContentAssistEntry;
 import org.eclipse.xtext.ide.editor.contentassist.IIdeContentProposalAcceptor;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.resource.XtextResource;
+import org.miron.bt.bt.BTModel;
 import org.miron.bt.ide.nodes.BuiltinAttributes;
 import org.miron.bt.ide.nodes.NodeDeclaration;
 import org.miron.bt.ide.nodes.NodeDeclarations;
+import org.miron.bt.nodes.NodeCatalogue;
+import org.miron.bt.nodes.NodeKind;
+import org.miron.bt.nodes.NodeModel;
+import org.miron.bt.nodes.PortModel;
+import org.miron.bt.util.BtFormats;
 import org.miron.bt.util.BtTrees;
 
 /**
- * BT completion: the grammar's keywords (built-in element names) plus, read from the text around
+ * BT completion: the built-in element names of the file's BehaviorTree.CPP version (from the
+ * catalogue, org.miron.bt.nodes) plus, read from the text around
  * the caret, node IDs declared in {@code <TreeNodesModel>} (here and in included files), SubTree
  * and main tree IDs, the attribute names of known nodes (declared ports, built-ins' parameters)
  * and the values of attributes with a fixed set of them.
  */
 public class BtProposalProvider extends IdeContentProposalProvider {
-    private static final Set<String> EXPLICIT_FORMS = Set.of("Action", "Condition", "Control", "Decorator");
-    private static final Set<String> SUBTREE_FORMS = Set.of("SubTree", "SubTreePlus");
+    /** Action, Condition, Control, Decorator: their ID names a registered node. */
+    private static final Set<String> EXPLICIT_FORMS = NodeCatalogue.all().stream()
+            .filter(n -> n.explicitForm() && n.kind() != NodeKind.SUBTREE).map(NodeModel::tag)
+            .collect(Collectors.toUnmodifiableSet());
+    /** SubTree, SubTreePlus: their ID names a tree. */
+    private static final Set<String> SUBTREE_FORMS = NodeCatalogue.all().stream()
+            .filter(n -> n.kind() == NodeKind.SUBTREE).map(NodeModel::tag).collect(Collectors.toUnmodifiableSet());
+    private static final Pattern FORMAT = Pattern.compile("<root\\b[^>]*\\b" + BtFormats.ATTRIBUTE + "\\s*=\\s*[\"'](\\d+)");
 
     @Override
     public void createProposals(Collection<ContentAssistContext> contexts, IIdeContentProposalAcceptor acceptor) {
@@ -39,10 +55,11 @@ public class BtProposalProvider extends IdeContentProposalProvider {
         XtextResource resource = first.getResource();
         String text = first.getRootNode() != null ? first.getRootNode().getText() : "";
         TagContext tag = TagContext.at(text, first.getOffset());
+        int version = versionOf(resource, text);
         List<ContentAssistEntry> entries = switch (tag.kind()) {
-            case ELEMENT_NAME -> elementNames(resource);
-            case ATTRIBUTE_NAME -> attributeNames(resource, tag);
-            case ATTRIBUTE_VALUE -> attributeValues(resource, tag);
+            case ELEMENT_NAME -> elementNames(resource, version);
+            case ATTRIBUTE_NAME -> attributeNames(resource, tag, version);
+            case ATTRIBUTE_VALUE -> attributeValues(resource, tag, version);
             case NONE -> List.of();
         };
         for (ContentAssistEntry entry : entries) {
@@ -62,15 +79,36 @@ public class BtProposalProvider extends IdeContentProposalProvider {
     // Element names after '<' come from the text (the parser proposes them only in some states).
     @Override
     protected boolean filterKeyword(Keyword keyword, ContentAssistContext context) {
-        return !BuiltinAttributes.ELEMENTS.contains(keyword.getValue()) || context.getRootNode() == null
+        return !BuiltinAttributes.isElement(keyword.getValue()) || context.getRootNode() == null
                 || TagContext.at(context.getRootNode().getText(), context.getOffset()).kind() != TagContext.Kind.ELEMENT_NAME;
     }
 
-    /** Built-ins, and compact forms: <MoveTo x="1"/> for a declared node, <GoTo/> for a tree. */
-    private static List<ContentAssistEntry> elementNames(XtextResource resource) {
+    /**
+     * The file's BehaviorTree.CPP version: from the model's root, else (a root start tag the parser
+     * has not made an element of yet) from the text; 3 without BTCPP_format.
+     */
+    static int versionOf(XtextResource resource, String text) {
+        int version;
+        if (!resource.getContents().isEmpty() && resource.getContents().get(0) instanceof BTModel model) {
+            version = model.formatVersion();
+        } else {
+            Matcher format = FORMAT.matcher(text);
+            version = format.find() ? Integer.parseInt(format.group(1)) : BtFormats.DEFAULT_VERSION;
+        }
+        // BTCPP_format="5" is an error of its own: propose as for the default meanwhile.
+        return NodeCatalogue.BOTH.contains(version) ? version : BtFormats.DEFAULT_VERSION;
+    }
+
+    /**
+     * The built-ins of the file's version, and compact forms: <MoveTo x="1"/> for a declared node,
+     * <GoTo/> for a tree.
+     */
+    private static List<ContentAssistEntry> elementNames(XtextResource resource, int version) {
         Map<String, ContentAssistEntry> result = new LinkedHashMap<>();
-        for (String builtin : BuiltinAttributes.ELEMENTS) {
-            result.put(builtin, entry(builtin, "built-in", ContentAssistEntry.KIND_KEYWORD, null));
+        for (String builtin : BuiltinAttributes.elements(version)) {
+            String documentation = NodeCatalogue.find(builtin).map(n -> BuiltinAttributes.documentation(n, version))
+                    .orElse(null);
+            result.put(builtin, entry(builtin, "built-in", ContentAssistEntry.KIND_KEYWORD, documentation));
         }
         for (NodeDeclaration node : NodeDeclarations.visibleFrom(resource).values()) {
             result.putIfAbsent(node.id(), entry(node.id(), node.kind(), ContentAssistEntry.KIND_CLASS, portsText(node)));
@@ -82,7 +120,7 @@ public class BtProposalProvider extends IdeContentProposalProvider {
         return new ArrayList<>(result.values());
     }
 
-    private static List<ContentAssistEntry> attributeValues(XtextResource resource, TagContext tag) {
+    private static List<ContentAssistEntry> attributeValues(XtextResource resource, TagContext tag, int version) {
         if ("ID".equals(tag.attribute())) {
             return idValues(resource, tag);
         }
@@ -92,7 +130,7 @@ public class BtProposalProvider extends IdeContentProposalProvider {
                 result.add(entry(tree, "BehaviorTree", ContentAssistEntry.KIND_REFERENCE, null));
             }
         }
-        for (String value : BuiltinAttributes.valuesOf(tag.attribute())) {
+        for (String value : BuiltinAttributes.valuesOf(tag.tag(), tag.attribute(), version)) {
             result.add(entry(value, tag.attribute(), ContentAssistEntry.KIND_VALUE, null));
         }
         return result;
@@ -114,7 +152,7 @@ public class BtProposalProvider extends IdeContentProposalProvider {
         return result;
     }
 
-    private static List<ContentAssistEntry> attributeNames(XtextResource resource, TagContext tag) {
+    private static List<ContentAssistEntry> attributeNames(XtextResource resource, TagContext tag, int version) {
         Map<String, ContentAssistEntry> names = new LinkedHashMap<>();
         String id = EXPLICIT_FORMS.contains(tag.tag()) || SUBTREE_FORMS.contains(tag.tag()) ? tag.attributes().get("ID")
                 : tag.tag();
@@ -125,11 +163,11 @@ public class BtProposalProvider extends IdeContentProposalProvider {
                         port.description()));
             }
         }
-        List<String> builtin = BuiltinAttributes.of(tag.tag());
-        if (builtin != null) {
-            builtin.forEach(a -> names.putIfAbsent(a, entry(a, tag.tag() + " attribute", ContentAssistEntry.KIND_PROPERTY, null)));
+        for (PortModel port : BuiltinAttributes.ports(tag.tag(), version)) {
+            names.putIfAbsent(port.name(), entry(port.name(), tag.tag() + " attribute", ContentAssistEntry.KIND_PROPERTY,
+                    BuiltinAttributes.documentation(port)));
         }
-        if (declared != null || builtin != null || tag.tag() != null) {
+        if (tag.tag() != null) {
             names.putIfAbsent("name", entry("name", "node name", ContentAssistEntry.KIND_PROPERTY, null));
         }
         tag.attributes().keySet().forEach(names::remove);

@@ -12,12 +12,15 @@ import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BehaviorTree;
 import org.miron.bt.bt.TreeNode;
+import org.miron.bt.ide.nodes.BuiltinAttributes;
 import org.miron.bt.ide.nodes.NodeDeclaration;
 import org.miron.bt.ide.nodes.NodeDeclarations;
+import org.miron.bt.util.BtFormats;
 
 /**
- * Hover text of BT elements (markdown): the XML comment just before the element, and for a tree
- * or a declared node its ports from {@code <TreeNodesModel>}.
+ * Hover text of BT elements (markdown): the XML comment just before the element, for a built-in
+ * what the catalogue says of it in the file's version (org.miron.bt.nodes), and for a tree or a
+ * declared node its ports from {@code <TreeNodesModel>}.
  */
 public class BtDocumentationProvider implements IEObjectDocumentationProvider {
 
@@ -36,6 +39,11 @@ public class BtDocumentationProvider implements IEObjectDocumentationProvider {
         String comment = leadingComment(element);
         if (comment != null) {
             parts.add(comment);
+        }
+        if (element instanceof TreeNode node && node.getTag() != null) {
+            int version = BtFormats.versionOf(node);
+            BuiltinAttributes.node(node.getTag(), version)
+                    .ifPresent(builtin -> parts.add(BuiltinAttributes.documentation(builtin, version)));
         }
         String id = idOf(element);
         if (id != null && element.eResource() != null) {

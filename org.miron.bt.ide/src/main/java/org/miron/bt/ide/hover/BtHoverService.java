@@ -8,10 +8,12 @@ import org.eclipse.xtext.nodemodel.ILeafNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.XtextResource;
 import org.miron.bt.bt.Attribute;
+import org.miron.bt.bt.TreeNode;
 
 /**
- * Xtext's hover, also over an attribute's value: the significant region of an attribute is its
- * name, so {@code <Action ID="MoveTo"/>} had no hover on "MoveTo", where the reader points.
+ * Xtext's hover, also over an attribute's value and over an element's name: the significant
+ * region of an attribute is its name, so {@code <Action ID="MoveTo"/>} had no hover on "MoveTo",
+ * where the reader points, and a built-in such as {@code <Repeat>} had none at all.
  */
 public class BtHoverService extends HoverService {
 
@@ -26,7 +28,8 @@ public class BtHoverService extends HoverService {
         }
         ILeafNode leaf = NodeModelUtils.findLeafNodeAtOffset(resource.getParseResult().getRootNode(), offset);
         EObject element = leaf == null ? null : NodeModelUtils.findActualSemanticObjectFor(leaf);
-        if (element instanceof Attribute) {
+        // Over an element's name: the node (the significant region Xtext looks for is a name feature it has not).
+        if (element instanceof Attribute || element instanceof TreeNode node && leaf.getText().equals(node.getTag())) {
             return new HoverContext(document, resource, offset, leaf.getTextRegion(), element);
         }
         return context;
