@@ -6,10 +6,12 @@ import org.eclipse.xtext.generator.AbstractGenerator
 import org.eclipse.xtext.generator.IFileSystemAccess2
 import org.eclipse.xtext.generator.IGeneratorContext
 import org.miron.dsl.miron.MironModel
+import org.miron.dsl.roqme.RoqmeModel
 
 /**
  * The MIRoN generator (docs/generators.md) as an Xtext generator: for a validated .miron resource,
- * the woven tree name.ext.xml, name.mzn, name.dzn and name.io.json, written through any
+ * the woven tree name.ext.xml, name.mzn, name.dzn, name.io.json and the RoQME runtime model
+ * name.roqme.json (for a .roqme resource only the latter, see RoqmeRuntimeModel), written through any
  * IFileSystemAccess2 (files, platform:/resource, in memory). All or nothing: the files are
  * generated into memory and reach the target only when the model generated without error.
  */
@@ -37,7 +39,7 @@ class MironGenerator extends AbstractGenerator {
 		val files = new StagedFiles
 		val errors = <GenerationError>newArrayList
 		val model = input.contents.head
-		if (!(model instanceof MironModel)) {
+		if (!(model instanceof RoqmeModel)) {
 			return new StagedGeneration(files, errors)
 		}
 		// Syntax and linking errors: generating from a broken model would produce garbage.
@@ -45,6 +47,10 @@ class MironGenerator extends AbstractGenerator {
 			errors += new GenerationError(model, '''line «e.line»: «e.message»''')
 		}
 		if (!errors.empty) {
+			return new StagedGeneration(files, errors)
+		}
+		if (!(model instanceof MironModel)) { // a .roqme file: its runtime model only
+			RoqmeRuntimeModel.stage(input, files, errors)
 			return new StagedGeneration(files, errors)
 		}
 		val name = input.URI.trimFileExtension.lastSegment
@@ -66,6 +72,7 @@ class MironGenerator extends AbstractGenerator {
 		files.generateFile(name + ".mzn", new MiniZincGenerator().generate(m))
 		files.generateFile(name + ".dzn", new DznGenerator().generate(m))
 		files.generateFile(name + ".io.json", new IoMapGenerator().generate(m))
+		RoqmeRuntimeModel.stage(input, files, errors)
 		new StagedGeneration(files, errors)
 	}
 }
