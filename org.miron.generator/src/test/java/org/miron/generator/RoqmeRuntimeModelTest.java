@@ -138,6 +138,28 @@ public class RoqmeRuntimeModelTest {
         assertFalse(find(model, "observations", "batteryHigh").has("doc"));
     }
 
+    /** The schema is no formality: what the provider could not read breaks it. */
+    @Test
+    public void theSchemaRefusesWhatTheProviderCouldNotRead() throws IOException {
+        JsonNode model = generate(INTRALOGISTICS.resolve("intralogistics.roqme"));
+        List<java.util.function.Consumer<com.fasterxml.jackson.databind.node.ObjectNode>> breakages = List.of(
+                m -> ((com.fasterxml.jackson.databind.node.ObjectNode) m.get("contexts").get(0)).remove("at"),
+                m -> ((com.fasterxml.jackson.databind.node.ObjectNode) m.get("observations").get(1).get("actions").get(0))
+                        .put("strength", "STRONG"),
+                m -> ((com.fasterxml.jackson.databind.node.ObjectNode) m.get("observations").get(0).get("pattern"))
+                        .put("op", "xor"),
+                m -> ((com.fasterxml.jackson.databind.node.ObjectNode) m.get("observations").get(0).get("pattern").get("left"))
+                        .remove("type"),
+                m -> ((com.fasterxml.jackson.databind.node.ObjectNode) m.get("timers").get(0)).put("schedule", "0 8 * * *"),
+                m -> ((com.fasterxml.jackson.databind.node.ObjectNode) m.get("beliefs").get(0)).put("reference", 1.5),
+                m -> m.put("extra", true));
+        for (int i = 0; i < breakages.size(); i++) {
+            com.fasterxml.jackson.databind.node.ObjectNode broken = (com.fasterxml.jackson.databind.node.ObjectNode) model.deepCopy();
+            breakages.get(i).accept(broken);
+            assertFalse("breakage " + i + " passes the schema", RoqmeModelSchema.problems(broken).isEmpty());
+        }
+    }
+
     @Test
     public void intralogisticsMironCarriesTheImportedRoqmeBesideTheIoJson() throws IOException {
         Path out = temp.newFolder().toPath();
