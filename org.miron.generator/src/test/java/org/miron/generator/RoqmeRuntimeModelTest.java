@@ -138,6 +138,21 @@ public class RoqmeRuntimeModelTest {
         assertFalse(find(model, "observations", "batteryHigh").has("doc"));
     }
 
+    @Test
+    public void everyRefusalCodeIsDocumented() throws Exception {
+        String doc = Files.readString(Toolchain.ROOT.resolve("docs/issue-codes.md"));
+        int codes = 0;
+        for (java.lang.reflect.Field field : RoqmeRuntimeModel.class.getFields()) {
+            if (field.getType() == String.class && ((String) field.get(null)).startsWith("roqme.")) {
+                codes++;
+                String code = (String) field.get(null);
+                assertTrue(code, code.matches("roqme\\.unsupported-[a-z0-9]+(-[a-z0-9]+)*"));
+                assertTrue(code + " is not in docs/issue-codes.md", doc.contains("| `" + code + "` |"));
+            }
+        }
+        assertEquals(6, codes);
+    }
+
     /** The schema is no formality: what the provider could not read breaks it. */
     @Test
     public void theSchemaRefusesWhatTheProviderCouldNotRead() throws IOException {

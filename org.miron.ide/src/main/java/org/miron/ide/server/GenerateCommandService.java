@@ -34,8 +34,8 @@ public class GenerateCommandService implements IExecutableCommandService {
         CommandArguments arguments = new CommandArguments(params);
         String uri = arguments.text(0);
         Map<String, Object> result;
-        if (uri == null || !uri.endsWith(".miron")) {
-            result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron file as first argument");
+        if (uri == null || !(uri.endsWith(".miron") || uri.endsWith(".roqme"))) {
+            result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron or .roqme file as first argument");
         } else {
             String output = arguments.text(1);
             try {
