@@ -139,6 +139,26 @@ public class RoqmeRuntimeModelTest {
     }
 
     @Test
+    public void anObservationReadingAVarpointIsRefused() throws IOException {
+        Path dir = temp.newFolder("vp").toPath();
+        Path model = dir.resolve("m.miron");
+        Files.writeString(model, """
+                miron M
+                property p
+                @varpoint speed : number (1:1:3)
+                observation fast : speed > 2 reinforces p
+                """);
+        Path out = temp.newFolder("vp-out").toPath();
+        Toolchain toolchain = new Toolchain();
+        assertEquals(toolchain.messages(), 1, toolchain.generate(model.toString(), out.toString()));
+        assertTrue(toolchain.messages(), toolchain.messages().contains(
+                "m.miron:4:20: error [roqme.unsupported-varpoint]: the RoQME provider does not know varpoint 'speed'"));
+        try (var files = Files.list(out)) {
+            assertEquals(List.of(), files.toList());
+        }
+    }
+
+    @Test
     public void everyRefusalCodeIsDocumented() throws Exception {
         String doc = Files.readString(Toolchain.ROOT.resolve("docs/issue-codes.md"));
         int codes = 0;

@@ -55,7 +55,7 @@ public class EvidenceHoverLspTest {
         assertTrue(tooClose, tooClose.contains("Humans very close undermine safety."));
         assertTrue(tooClose, tooClose.contains("undermines `safety` HIGH: likelihood ratio 3.333, survival 5 minutes (the default)"));
         String emergency = hover("observation emerg");
-        assertTrue(emergency, emergency.contains("undermines `safety` VERYHIGH: likelihood ratio 10, survival 5 minutes\n"));
+        assertTrue(emergency, emergency.endsWith("undermines `safety` VERYHIGH: likelihood ratio 10, survival 5 minutes"));
         String delivered = hover("observation deliv");
         assertTrue(delivered, delivered.contains(
                 "reinforces `mission_completion` MEDIUM: likelihood ratio 0.5, survival 30 minutes (of mission_completion)"));

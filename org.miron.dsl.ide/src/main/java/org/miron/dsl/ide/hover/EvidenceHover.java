@@ -113,7 +113,7 @@ final class EvidenceHover {
     /** "undermines `safety` HIGH: likelihood ratio 3.333". */
     private static String evidence(EvidenceAction action, String beliefName) {
         String verb = action instanceof Undermines ? "undermines" : "reinforces";
-        return verb + (beliefName == null ? "" : " `" + beliefName + "`") + " " + Evidence.strength(action.getStrength())
+        return verb + (beliefName == null ? "" : " `" + beliefName + "`") + " " + Evidence.strength(action.getStrength()).name()
                 + ": likelihood ratio " + Evidence.number(Evidence.ratio(action));
     }
 
