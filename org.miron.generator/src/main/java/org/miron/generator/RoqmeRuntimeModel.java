@@ -6,9 +6,6 @@ import java.util.List;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.dsl.roqme.RoqmeModel;
 
-import com.fasterxml.jackson.core.JsonGenerator;
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
@@ -36,8 +33,6 @@ public final class RoqmeRuntimeModel {
     /** A declaration, action or type class the generator has no case for. */
     public static final String ELEMENT = "roqme.unsupported-element";
 
-    private static final ObjectMapper MAPPER = new ObjectMapper().enable(JsonGenerator.Feature.WRITE_BIGDECIMAL_AS_PLAIN);
-
     private RoqmeRuntimeModel() {
     }
 
@@ -56,11 +51,7 @@ public final class RoqmeRuntimeModel {
         if (!found.isEmpty()) {
             return;
         }
-        try {
-            files.generateFile(name + SUFFIX, MAPPER.writer(new IoJsonPrinter()).writeValueAsString(root) + "\n");
-        } catch (JsonProcessingException e) {
-            throw new IllegalStateException("a JSON tree always serializes", e);
-        }
+        files.generateFile(name + SUFFIX, RoqmeJsonText.print(root));
     }
 
     /** The runtime model as a JSON tree; problems go to errors (the tree is then incomplete). */

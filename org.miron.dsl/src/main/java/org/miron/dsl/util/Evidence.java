@@ -7,7 +7,7 @@ import org.miron.dsl.roqme.TimeValue;
 import org.miron.dsl.roqme.Undermines;
 
 /**
- * The numbers of the RoQME reasoner that a model's text implies (docs/roqme-runtime.md, "The
+ * The numbers of the RoQME reasoner that a model's text implies (the RoQME runtime spec of issue 22, "The
  * reasoner"): likelihood ratios of the action strengths, the default reference and survival, and
  * times in milliseconds. One place, so that the editor's hovers, the generator and anything else
  * that explains a model say the same as the provider computes.
