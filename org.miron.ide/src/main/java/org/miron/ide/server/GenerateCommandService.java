@@ -72,7 +72,8 @@ public class GenerateCommandService implements IExecutableCommandService {
         if (!generated.errors().isEmpty()) {
             return answer(List.of(), generated.errors(), "Not generated: " + generated.errors().get(0));
         }
-        return answer(generated.written(), List.of(), "Generated " + generated.written().size() + " files into "
+        int count = generated.written().size();
+        return answer(generated.written(), List.of(), "Generated " + count + (count == 1 ? " file" : " files") + " into "
                 + folder + ": " + String.join(", ", generated.written().stream()
                         .map(p -> Path.of(p).getFileName().toString()).toList()));
     }

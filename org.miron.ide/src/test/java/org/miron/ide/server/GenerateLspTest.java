@@ -51,7 +51,7 @@ public class GenerateLspTest {
         JsonObject result = generate(uri, "roqme-out");
         assertTrue(result.toString(), result.get("ok").getAsBoolean());
         assertTrue(result.get("message").getAsString(),
-                result.get("message").getAsString().startsWith("Generated 1 files") || result.get("message").getAsString().startsWith("Generated 1 file"));
+                result.get("message").getAsString().startsWith("Generated 1 file into "));
         assertTrue(Files.isRegularFile(session.workspace.resolve("roqme-out/intralogistics.roqme.json")));
     }
 
