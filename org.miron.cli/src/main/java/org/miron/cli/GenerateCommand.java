@@ -20,19 +20,21 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * `miron generate FILE.miron... [-o DIR] [--weights need|metric] [--bt-format 3|4]`: validates the models and
- * everything they import, then writes name.ext.xml, name.mzn, name.dzn and name.io.json per model
- * with {@link MironGenerator} through a file-system access on DIR. Any error (validation or
- * generation, of any model) is printed and nothing at all is written.
+ * `miron generate FILE.miron|FILE.roqme... [-o DIR] [--weights need|metric] [--bt-format 3|4]`: validates the
+ * models and everything they import, then writes name.ext.xml, name.mzn, name.dzn, name.io.json and
+ * name.roqme.json per MIRoN model, and name.roqme.json per RoQME model, with MironGenerator through a
+ * file-system access on DIR. Any error (validation or generation, of any model) is printed and nothing
+ * at all is written.
  */
 @Command(name = "generate", mixinStandardHelpOptions = true,
-        description = "Generates the woven behaviour tree (name.ext.xml), the MiniZinc model (name.mzn, name.dzn) "
-                + "and the engine's input/output map (name.io.json) of MIRoN models.",
+        description = "Generates the woven behaviour tree (name.ext.xml), the MiniZinc model (name.mzn, name.dzn), "
+                + "the engine's input/output map (name.io.json) and the RoQME runtime model (name.roqme.json) of MIRoN "
+                + "models, and the RoQME runtime model of RoQME models.",
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = { "0:generated", "1:model errors (listed; nothing written)", "2:usage error" })
 public class GenerateCommand implements Callable<Integer> {
 
-    @Parameters(arity = "1..*", paramLabel = "FILE.miron", description = "MIRoN models to generate.")
+    @Parameters(arity = "1..*", paramLabel = "FILE.miron|FILE.roqme", description = "MIRoN and RoQME models to generate.")
     List<File> files;
 
     @Option(names = { "-o", "--output" }, paramLabel = "DIR", defaultValue = ".",
@@ -68,8 +70,8 @@ public class GenerateCommand implements Callable<Integer> {
         }
         PrintWriter err = spec.commandLine().getErr();
         for (File file : files) {
-            if (!file.getName().endsWith(".miron")) {
-                err.println(file + ": error: generate needs .miron models");
+            if (!file.getName().endsWith(".miron") && !file.getName().endsWith(".roqme")) {
+                err.println(file + ": error: generate needs .miron or .roqme models");
                 err.flush();
                 return Files.USAGE;
             }

@@ -68,6 +68,34 @@ public class GenerateCommandTest {
     }
 
     @Test
+    public void aRoqmeModelGeneratesItsRuntimeModelOnly() throws IOException {
+        copyIntralogistics();
+        Path out = temp.getRoot().toPath().resolve("out");
+        Cli cli = new Cli();
+        Path model = temp.getRoot().toPath().resolve("intralogistics.roqme");
+        assertEquals(cli.out(), 0, cli.run("generate", model.toString(), "-o", out.toString()));
+        assertEquals("wrote " + out.resolve("intralogistics.roqme.json"), cli.out().strip());
+        try (Stream<Path> files = Files.list(out)) {
+            assertEquals(List.of(out.resolve("intralogistics.roqme.json")), files.toList());
+        }
+        String json = Files.readString(out.resolve("intralogistics.roqme.json"));
+        assertTrue(json, json.contains("\"source\": \"intralogistics.roqme\""));
+        assertTrue(json, json.contains("\"id\": \"batteryLow\""));
+    }
+
+    @Test
+    public void aRoqmeModelTheRuntimeModelCannotHoldIsRefusedWithItsPosition() throws IOException {
+        Path model = write("bad.roqme", "param every : time default 5 seconds\ntimer tick := every\n"
+                + "property p\nobservation o : tick reinforces p\n");
+        Path out = temp.getRoot().toPath().resolve("out");
+        Cli cli = new Cli();
+        assertEquals(1, cli.run("generate", model.toString(), "-o", out.toString()));
+        assertTrue(cli.out(), cli.out().matches(
+                "(?s).*bad\\.roqme:2:15: error \\[roqme\\.unsupported-timer-period\\]: the period of timer 'tick'.*"));
+        assertFalse("nothing may be written", Files.exists(out));
+    }
+
+    @Test
     public void usageErrorsExitWithTwo() throws IOException {
         String model = Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron").toString();
         assertEquals(2, Cli.exit("generate"));

@@ -11,10 +11,12 @@ import org.eclipse.xtext.generator.IFileSystemAccess2;
 import org.eclipse.xtext.generator.IGeneratorContext;
 import org.miron.bt.bt.BTModel;
 import org.miron.dsl.miron.MironModel;
+import org.miron.dsl.roqme.RoqmeModel;
 
 /**
  * The MIRoN generator (docs/generators.md) as an Xtext generator: for a validated .miron resource,
- * the woven tree name.ext.xml, name.mzn, name.dzn and name.io.json, written through any
+ * the woven tree name.ext.xml, name.mzn, name.dzn, name.io.json and the RoQME runtime model
+ * name.roqme.json (for a .roqme resource only the latter, see RoqmeRuntimeModel), written through any
  * IFileSystemAccess2 (files, platform:/resource, in memory). All or nothing: the files are
  * generated into memory and reach the target only when the model generated without error.
  */
@@ -59,14 +61,18 @@ public class MironGenerator extends AbstractGenerator {
         StagedFiles files = new StagedFiles();
         List<GenerationError> errors = new ArrayList<>();
         EObject root = input.getContents().isEmpty() ? null : input.getContents().get(0);
-        if (!(root instanceof MironModel model)) {
+        if (!(root instanceof RoqmeModel)) {
             return new StagedGeneration(files, errors);
         }
         // Syntax and linking errors: generating from a broken model would produce garbage.
         for (Resource.Diagnostic e : input.getErrors()) {
-            errors.add(new GenerationError(model, "line " + e.getLine() + ": " + e.getMessage()));
+            errors.add(new GenerationError(root, "line " + e.getLine() + ": " + e.getMessage()));
         }
         if (!errors.isEmpty()) {
+            return new StagedGeneration(files, errors);
+        }
+        if (!(root instanceof MironModel model)) { // a .roqme file: its runtime model only
+            RoqmeRuntimeModel.stage(input, files, errors);
             return new StagedGeneration(files, errors);
         }
         String name = input.getURI().trimFileExtension().lastSegment();
@@ -89,6 +95,7 @@ public class MironGenerator extends AbstractGenerator {
         files.generateFile(name + ".mzn", new MiniZincGenerator().generate(m));
         files.generateFile(name + ".dzn", new DznGenerator().generate(m));
         files.generateFile(name + ".io.json", new IoMapGenerator().generate(m));
+        RoqmeRuntimeModel.stage(input, files, errors);
         return new StagedGeneration(files, errors);
     }
 }

@@ -15,14 +15,14 @@ import org.eclipse.xtext.generator.JavaIoFileSystemAccess;
 import org.eclipse.xtext.generator.OutputConfiguration;
 import org.eclipse.xtext.resource.impl.ResourceServiceProviderRegistryImpl;
 import org.eclipse.xtext.util.RuntimeIOException;
-import org.miron.dsl.miron.MironModel;
+import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.generator.GenerationError;
 import org.miron.generator.MironGenerator;
 import org.miron.generator.StagedGeneration;
 import org.miron.generator.WeightPolicy;
 
 /**
- * Generates several MIRoN models loaded by a {@link ModelLoader} all or nothing: the models and
+ * Generates several MIRoN (and RoQME) models loaded by a {@link ModelLoader} all or nothing: the models and
  * everything they import are validated, every model is generated in memory, and only when none
  * failed (and no two write the same file) is anything written to the target. The command line,
  * Gradle's generate tasks and the language server run generation through this class.
@@ -73,7 +73,7 @@ public final class BatchGeneration {
         generator.setBtFormat(btFormat);
     }
 
-    /** Generates the MIRoN models among resources (loaded by this run's loader) into target. */
+    /** Generates the MIRoN and RoQME models among resources (loaded by this run's loader) into target. */
     public Outcome run(List<Resource> resources, IFileSystemAccess2 target) {
         List<Diagnostic> validation = loader.validateAll();
         if (validation.stream().anyMatch(d -> d.severity() == Diagnostic.Severity.ERROR)) {
@@ -83,7 +83,7 @@ public final class BatchGeneration {
         List<Diagnostic> errors = new ArrayList<>();
         Set<String> names = new HashSet<>();
         for (Resource resource : resources) {
-            if (resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof MironModel)) {
+            if (resource.getContents().isEmpty() || !(resource.getContents().get(0) instanceof RoqmeModel)) {
                 continue;
             }
             StagedGeneration result;
@@ -95,7 +95,7 @@ public final class BatchGeneration {
                 continue;
             }
             for (GenerationError e : result.errors()) {
-                errors.add(loader.error(e.source(), e.message()));
+                errors.add(loader.error(e.source(), e.code(), e.message()));
             }
             for (String name : result.files().names()) {
                 if (!names.add(name)) {

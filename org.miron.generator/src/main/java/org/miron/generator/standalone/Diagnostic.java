@@ -6,7 +6,7 @@ import java.util.List;
  * One problem in a model file, printed the way compilers do: {@code file:line:col: severity [code]: message}.
  * Lines and columns are 1-based, 0 when unknown; the end position (endLine:endColumn, the column just
  * after the problem's text) is 0 when unknown. The code is the language's stable issue code (see
- * docs/issue-codes.md), null for problems found by a generator; data is what a quick fix needs.
+ * docs/issue-codes.md), null for most problems found by a generator; data is what a quick fix needs.
  */
 public record Diagnostic(String file, int line, int column, int endLine, int endColumn, Severity severity,
         String code, List<String> data, String message) implements Comparable<Diagnostic> {

@@ -103,14 +103,20 @@ public class ModelLoader {
 
     /** A problem found by a generator, positioned at the model element it is about. */
     public Diagnostic error(EObject element, String message) {
+        return error(element, null, message);
+    }
+
+    /** A problem found by a generator with its issue code (null: none), at the model element it is about. */
+    public Diagnostic error(EObject element, String code, String message) {
         Resource resource = element == null ? null : element.eResource();
         String file = resource == null ? "?" : displayPath(resource.getURI());
         ICompositeNode node = NodeModelUtils.findActualNodeFor(element);
         if (node == null) {
-            return new Diagnostic(file, 0, 0, Diagnostic.Severity.ERROR, message);
+            return new Diagnostic(file, 0, 0, 0, 0, Diagnostic.Severity.ERROR, code, List.of(), message);
         }
         LineAndColumn position = NodeModelUtils.getLineAndColumn(node, node.getOffset());
-        return new Diagnostic(file, position.getLine(), position.getColumn(), Diagnostic.Severity.ERROR, message);
+        return new Diagnostic(file, position.getLine(), position.getColumn(), 0, 0, Diagnostic.Severity.ERROR, code,
+                List.of(), message);
     }
 
     private static int number(Integer value) {

@@ -34,8 +34,8 @@ public class GenerateCommandService implements IExecutableCommandService {
         CommandArguments arguments = new CommandArguments(params);
         String uri = arguments.text(0);
         Map<String, Object> result;
-        if (uri == null || !uri.endsWith(".miron")) {
-            result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron file as first argument");
+        if (uri == null || !(uri.endsWith(".miron") || uri.endsWith(".roqme"))) {
+            result = answer(List.of(), List.of(), "miron.generate needs the URI of a .miron or .roqme file as first argument");
         } else {
             String output = arguments.text(1);
             try {
@@ -72,7 +72,8 @@ public class GenerateCommandService implements IExecutableCommandService {
         if (!generated.errors().isEmpty()) {
             return answer(List.of(), generated.errors(), "Not generated: " + generated.errors().get(0));
         }
-        return answer(generated.written(), List.of(), "Generated " + generated.written().size() + " files into "
+        int count = generated.written().size();
+        return answer(generated.written(), List.of(), "Generated " + count + (count == 1 ? " file" : " files") + " into "
                 + folder + ": " + String.join(", ", generated.written().stream()
                         .map(p -> Path.of(p).getFileName().toString()).toList()));
     }

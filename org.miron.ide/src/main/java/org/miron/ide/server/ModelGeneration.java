@@ -35,7 +35,7 @@ final class ModelGeneration {
         if (!staged.succeeded()) {
             List<String> errors = new ArrayList<>();
             for (GenerationError error : staged.errors()) {
-                errors.add(position(error) + error.message());
+                errors.add(position(error) + (error.code() == null ? "" : "[" + error.code() + "] ") + error.message());
             }
             return new Result(List.of(), errors);
         }

@@ -36,11 +36,23 @@ public class GenerateLspTest {
         JsonObject result = generate(uri);
         assertTrue(result.toString(), result.get("ok").getAsBoolean());
         Path generated = session.workspace.resolve("generated");
-        for (String name : List.of("intralogistics.ext.xml", "intralogistics.mzn", "intralogistics.dzn", "intralogistics.io.json")) {
+        for (String name : List.of("intralogistics.ext.xml", "intralogistics.mzn", "intralogistics.dzn", "intralogistics.io.json",
+                "intralogistics.roqme.json")) {
             assertTrue(name, Files.isRegularFile(generated.resolve(name)));
             assertTrue(result.toString(), result.get("written").toString().contains(name));
         }
-        assertTrue(result.get("message").getAsString(), result.get("message").getAsString().startsWith("Generated 4 files"));
+        assertTrue(result.get("message").getAsString(), result.get("message").getAsString().startsWith("Generated 5 files"));
+    }
+
+    @Test
+    public void aRoqmeModelGeneratesItsRuntimeModel() throws Exception {
+        String uri = session.client.open(session.workspace.resolve("intralogistics.roqme"));
+        session.client.awaitDiagnostics(uri, d -> true);
+        JsonObject result = generate(uri, "roqme-out");
+        assertTrue(result.toString(), result.get("ok").getAsBoolean());
+        assertTrue(result.get("message").getAsString(),
+                result.get("message").getAsString().startsWith("Generated 1 file into "));
+        assertTrue(Files.isRegularFile(session.workspace.resolve("roqme-out/intralogistics.roqme.json")));
     }
 
     @Test

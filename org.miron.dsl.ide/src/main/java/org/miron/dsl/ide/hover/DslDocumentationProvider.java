@@ -13,12 +13,15 @@ import org.miron.dsl.miron.BehaviorTreeEnumType;
 import org.miron.dsl.miron.MironPackage;
 import org.miron.dsl.miron.NumericSampledType;
 import org.miron.dsl.miron.VariationPoint;
+import org.miron.dsl.roqme.BeliefVariable;
 import org.miron.dsl.roqme.DocumentableElement;
+import org.miron.dsl.roqme.Observation;
 import org.miron.dsl.roqme.RoqmePackage;
 
 /**
  * Hover text of RoQME and MIRoN elements (markdown): the documentation comment, the declaration,
- * and for a varpoint each value with its impacts. Imported BT elements are described as the BT
+ * for a varpoint each value with its impacts, and for observations and beliefs what the RoQME
+ * reasoner makes of them (EvidenceHover). Imported BT elements are described as the BT
  * language does.
  */
 public class DslDocumentationProvider implements IEObjectDocumentationProvider {
@@ -39,6 +42,11 @@ public class DslDocumentationProvider implements IEObjectDocumentationProvider {
             String declaration = sourceText(element);
             if (declaration != null) {
                 parts.add("```\n" + declaration + "\n```");
+            }
+            if (element instanceof Observation observation) {
+                parts.add(EvidenceHover.observation(observation));
+            } else if (element instanceof BeliefVariable belief) {
+                parts.add(EvidenceHover.belief(belief));
             }
         }
         return parts.isEmpty() ? null : String.join("\n\n", parts);
@@ -82,7 +90,7 @@ public class DslDocumentationProvider implements IEObjectDocumentationProvider {
     }
 
     /** An element's text with its layout reduced to single spaces, without its documentation comment. */
-    private static String sourceText(EObject element) {
+    static String sourceText(EObject element) {
         ICompositeNode node = element == null ? null : NodeModelUtils.findActualNodeFor(element);
         if (node == null) {
             return null;
