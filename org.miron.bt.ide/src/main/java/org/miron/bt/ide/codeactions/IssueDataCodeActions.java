@@ -25,7 +25,7 @@ import org.miron.bt.bt.BTModel;
  */
 public class IssueDataCodeActions implements ICodeActionService2 {
 
-    /** The language server's command that converts a behaviour tree (org.miron.ide's ConvertCommandService). */
+    /** The language server's command that converts a behaviour tree (org.miron.lsp's ConvertCommandService). */
     public static final String CONVERT_COMMAND = "miron.convert";
 
     private enum Fix {
