@@ -23,7 +23,7 @@ import org.miron.bt.bt.TreeNode
 import org.miron.bt.scoping.BtGlobalScopeProvider
 import org.miron.bt.util.BtTrees
 import org.miron.bt.util.BtFormats
-import org.miron.bt.convert.BtFormatConverter
+import org.miron.bt.formats.BtFormatConverter
 import org.miron.dsl.miron.BehaviorTreeLiteral
 import org.miron.dsl.miron.BtBinding
 import org.miron.dsl.miron.InsertionType

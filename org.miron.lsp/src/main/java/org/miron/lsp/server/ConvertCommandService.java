@@ -22,8 +22,8 @@ import org.eclipse.xtext.resource.XtextResource;
 import org.eclipse.xtext.resource.XtextResourceSet;
 import org.eclipse.xtext.util.CancelIndicator;
 import org.miron.bt.bt.BTModel;
-import org.miron.bt.convert.BtFormatConverter;
-import org.miron.bt.convert.ConversionProblem;
+import org.miron.bt.formats.BtFormatConverter;
+import org.miron.bt.formats.ConversionProblem;
 
 /**
  * workspace/executeCommand {@code miron.convert} with arguments {@code [uri, version]}: converts

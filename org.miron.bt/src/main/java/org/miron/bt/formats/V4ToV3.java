@@ -1,6 +1,6 @@
-package org.miron.bt.convert;
+package org.miron.bt.formats;
 
-import static org.miron.bt.convert.TreeEdits.*;
+import static org.miron.bt.formats.TreeEdits.*;
 
 import java.util.List;
 import java.util.Map;

@@ -1,4 +1,4 @@
-package org.miron.bt.convert;
+package org.miron.bt.formats;
 
 import java.util.List;
 import java.util.regex.Pattern;

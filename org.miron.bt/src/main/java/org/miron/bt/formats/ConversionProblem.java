@@ -1,4 +1,4 @@
-package org.miron.bt.convert;
+package org.miron.bt.formats;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.nodemodel.ICompositeNode;
