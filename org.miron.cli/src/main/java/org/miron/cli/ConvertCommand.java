@@ -12,9 +12,9 @@ import java.util.concurrent.Callable;
 import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.bt.bt.BTModel;
 import org.eclipse.xtext.resource.XtextResource;
-import org.miron.bt.convert.BtFormatConverter;
-import org.miron.bt.convert.Conversion;
-import org.miron.bt.convert.ConversionProblem;
+import org.miron.bt.formats.BtFormatConverter;
+import org.miron.bt.formats.Conversion;
+import org.miron.bt.formats.ConversionProblem;
 import org.miron.generator.standalone.Diagnostic;
 import org.miron.generator.standalone.ModelLoader;
 

@@ -3,7 +3,7 @@ package org.miron.cli;
 import java.io.IOException;
 import java.util.concurrent.Callable;
 
-import org.miron.ide.server.MironLanguageServer;
+import org.miron.lsp.server.MironLanguageServer;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

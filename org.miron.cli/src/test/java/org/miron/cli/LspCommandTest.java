@@ -12,8 +12,8 @@ import java.util.concurrent.TimeUnit;
 
 import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.junit.Test;
-import org.miron.ide.server.LspClient;
-import org.miron.ide.server.Workspaces;
+import org.miron.lsp.server.LspClient;
+import org.miron.lsp.server.Workspaces;
 
 import picocli.CommandLine;
 

@@ -8,11 +8,11 @@ import java.nio.channels.Pipe;
 import java.util.concurrent.Future;
 
 import org.eclipse.lsp4e.server.StreamConnectionProvider;
-import org.miron.ide.server.MironLanguageServer;
+import org.miron.lsp.server.MironLanguageServer;
 
 /**
  * LSP4E's connection to the MIRoN language server, started in-process (in Eclipse's JVM, from the
- * org.miron.ide bundle) on in-memory pipes: no external `miron` command or Java is needed. NIO
+ * org.miron.lsp bundle) on in-memory pipes: no external `miron` command or Java is needed. NIO
  * pipes, not java.io's piped streams, since LSP4E reads and writes from pooled threads.
  */
 public final class MironStreamConnectionProvider implements StreamConnectionProvider {

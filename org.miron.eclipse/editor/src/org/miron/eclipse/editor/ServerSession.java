@@ -10,7 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.Future;
 
-import org.miron.ide.server.MironLanguageServer;
+import org.miron.lsp.server.MironLanguageServer;
 
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;

@@ -79,12 +79,14 @@ public class BtcppCorpusTest {
         return loader.validateAll();
     }
 
-    /** The corpus: MIRON_BTCPP3_CORPUS, else the shared oracle beside the repository, else the vendored copy. */
+    /**
+     * The corpus: the copy MIRON_BTCPP3_CORPUS names (system property or environment variable), else
+     * the vendored one; a configured copy must equal the vendored one, so a refreshed corpus is
+     * noticed until it is copied in.
+     */
     static Path corpus() throws IOException {
         String configured = System.getProperty("MIRON_BTCPP3_CORPUS", System.getenv("MIRON_BTCPP3_CORPUS"));
-        Path shared = ROOT.resolve("../shared/oracles/btcpp3-corpus").normalize();
-        Path chosen = configured != null ? Path.of(configured).toAbsolutePath()
-                : Files.isRegularFile(shared.resolve("manifest.tsv")) ? shared : VENDORED;
+        Path chosen = configured != null ? Path.of(configured).toAbsolutePath() : VENDORED;
         System.out.println("btcpp corpus: reading " + chosen);
         if (!chosen.equals(VENDORED) && Files.isDirectory(VENDORED)) {
             assertEquals("the vendored corpus differs from " + chosen + ": copy it again", listing(chosen),

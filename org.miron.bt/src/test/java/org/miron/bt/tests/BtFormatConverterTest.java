@@ -23,8 +23,8 @@ import org.eclipse.xtext.EcoreUtil2;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.util.BtTrees;
-import org.miron.bt.convert.BtFormatConverter;
-import org.miron.bt.convert.Conversion;
+import org.miron.bt.formats.BtFormatConverter;
+import org.miron.bt.formats.Conversion;
 import org.miron.bt.formatting2.BtFormatting;
 import org.miron.bt.validation.BtIssueCodes;
 

@@ -102,7 +102,7 @@ public final class Probe {
         java.io.PipedInputStream serverIn = new java.io.PipedInputStream(toServer, 1 << 16);
         java.io.PipedOutputStream serverOut = new java.io.PipedOutputStream();
         java.io.PipedInputStream fromServer = new java.io.PipedInputStream(serverOut, 1 << 16);
-        java.util.concurrent.Future<Void> listening = org.miron.ide.server.MironLanguageServer.serve(serverIn, serverOut, false);
+        java.util.concurrent.Future<Void> listening = org.miron.lsp.server.MironLanguageServer.serve(serverIn, serverOut, false);
         try {
             String uri = new File(workspace).toURI().toString();
             String request = "{\"jsonrpc\":\"2.0\",\"id\":1,\"method\":\"initialize\",\"params\":{\"processId\":null,"

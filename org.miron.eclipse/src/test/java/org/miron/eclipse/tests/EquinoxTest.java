@@ -149,7 +149,7 @@ public class EquinoxTest {
     public void ourBundlesCarryTheBuildsVersion() {
         String version = System.getProperty("miron.osgiVersion");
         for (String name : List.of("org.miron.bt", "org.miron.dsl", "org.miron.generator", "org.miron.bt.ide",
-                "org.miron.dsl.ide", "org.miron.ide")) {
+                "org.miron.dsl.ide", "org.miron.lsp")) {
             Bundle b = bundle(name);
             assertEquals(name, version, b.getVersion().toString());
             assertEquals(name, "JavaSE-17", b.getHeaders().get(Constants.BUNDLE_REQUIREDEXECUTIONENVIRONMENT));

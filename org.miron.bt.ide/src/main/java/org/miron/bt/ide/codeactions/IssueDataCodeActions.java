@@ -26,7 +26,7 @@ import org.miron.bt.nodes.NodeCatalogue;
  */
 public class IssueDataCodeActions implements ICodeActionService2 {
 
-    /** The language server's command that converts a behaviour tree (org.miron.ide's ConvertCommandService). */
+    /** The language server's command that converts a behaviour tree (org.miron.lsp's ConvertCommandService). */
     public static final String CONVERT_COMMAND = "miron.convert";
 
     private enum Fix {

@@ -1,0 +1,115 @@
+package org.miron.lsp.server;
+
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import org.eclipse.lsp4j.ClientCapabilities;
+import org.eclipse.lsp4j.CompletionItem;
+import org.eclipse.lsp4j.CompletionList;
+import org.eclipse.lsp4j.CompletionParams;
+import org.eclipse.lsp4j.DefinitionParams;
+import org.eclipse.lsp4j.DocumentHighlight;
+import org.eclipse.lsp4j.DocumentHighlightParams;
+import org.eclipse.lsp4j.ExecuteCommandCapabilities;
+import org.eclipse.lsp4j.Hover;
+import org.eclipse.lsp4j.HoverParams;
+import org.eclipse.lsp4j.InitializeParams;
+import org.eclipse.lsp4j.InitializeResult;
+import org.eclipse.lsp4j.Location;
+import org.eclipse.lsp4j.ReferenceParams;
+import org.eclipse.lsp4j.ServerCapabilities;
+import org.eclipse.lsp4j.WorkspaceClientCapabilities;
+import org.eclipse.lsp4j.jsonrpc.messages.Either;
+import org.eclipse.xtext.ide.server.LanguageServerImpl;
+import org.eclipse.xtext.ide.server.hover.IHoverService;
+import org.eclipse.xtext.util.CancelIndicator;
+
+/**
+ * Xtext's language server, also for clients that open single files without any workspace folder
+ * and for clients that do not announce workspace/executeCommand (miron.generate is then still
+ * offered: Xtext would leave its command registry uninitialized and fail on the first command),
+ * and answering requests for positions outside the document.
+ */
+public class MironLanguageServerImpl extends LanguageServerImpl {
+    private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
+
+    @Override
+    public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
+        if (params.getCapabilities() == null) {
+            params.setCapabilities(new ClientCapabilities());
+        }
+        if (params.getCapabilities().getWorkspace() == null) {
+            params.getCapabilities().setWorkspace(new WorkspaceClientCapabilities());
+        }
+        WorkspaceClientCapabilities workspace = params.getCapabilities().getWorkspace();
+        if (workspace.getExecuteCommand() == null) {
+            workspace.setExecuteCommand(new ExecuteCommandCapabilities(false));
+        }
+        // Without a root Xtext would fail in initialize; an empty list of workspace folders works.
+        if (params.getRootUri() == null && params.getRootPath() == null && params.getWorkspaceFolders() == null) {
+            params.setWorkspaceFolders(List.of());
+            workspace.setWorkspaceFolders(true);
+        }
+        return super.initialize(params);
+    }
+
+    // A position outside the document (a client racing an edit, or a buggy one) gets an empty
+    // answer: Xtext would fail the request and log the whole document text.
+
+    @Override
+    protected Either<List<CompletionItem>, CompletionList> completion(CancelIndicator cancelIndicator,
+            CompletionParams params) {
+        try {
+            return super.completion(cancelIndicator, params);
+        } catch (IndexOutOfBoundsException outside) {
+            return Either.forRight(new CompletionList());
+        }
+    }
+
+    @Override
+    protected Hover hover(HoverParams params, CancelIndicator cancelIndicator) {
+        try {
+            return super.hover(params, cancelIndicator);
+        } catch (IndexOutOfBoundsException outside) {
+            return IHoverService.EMPTY_HOVER;
+        }
+    }
+
+    @Override
+    protected List<? extends Location> definition(CancelIndicator cancelIndicator, DefinitionParams params) {
+        try {
+            return super.definition(cancelIndicator, params);
+        } catch (IndexOutOfBoundsException outside) {
+            return List.of();
+        }
+    }
+
+    @Override
+    protected List<? extends Location> references(ReferenceParams params, CancelIndicator cancelIndicator) {
+        try {
+            return super.references(params, cancelIndicator);
+        } catch (IndexOutOfBoundsException outside) {
+            return List.of();
+        }
+    }
+
+    @Override
+    protected List<? extends DocumentHighlight> documentHighlight(DocumentHighlightParams params,
+            CancelIndicator cancelIndicator) {
+        try {
+            return super.documentHighlight(params, cancelIndicator);
+        } catch (IndexOutOfBoundsException outside) {
+            return List.of();
+        }
+    }
+
+    // Completion also starts where the three languages want it: '<' and '"' in BT, '::' in MIRoN.
+    @Override
+    protected ServerCapabilities createServerCapabilities(InitializeParams params) {
+        ServerCapabilities capabilities = super.createServerCapabilities(params);
+        if (capabilities.getCompletionProvider() != null) {
+            capabilities.getCompletionProvider().setTriggerCharacters(TRIGGER_CHARACTERS);
+        }
+        return capabilities;
+    }
+}

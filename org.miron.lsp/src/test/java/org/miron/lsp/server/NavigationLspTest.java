@@ -1,0 +1,143 @@
+package org.miron.lsp.server;
+
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertNotNull;
+import static org.junit.Assert.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+
+import org.eclipse.lsp4j.DocumentSymbol;
+import org.eclipse.lsp4j.DocumentSymbolParams;
+import org.eclipse.lsp4j.FoldingRange;
+import org.eclipse.lsp4j.FoldingRangeRequestParams;
+import org.eclipse.lsp4j.Hover;
+import org.eclipse.lsp4j.HoverParams;
+import org.eclipse.lsp4j.Location;
+import org.eclipse.lsp4j.ReferenceContext;
+import org.eclipse.lsp4j.ReferenceParams;
+import org.eclipse.lsp4j.RenameParams;
+import org.eclipse.lsp4j.SemanticTokensParams;
+import org.eclipse.lsp4j.SymbolInformation;
+import org.eclipse.lsp4j.TextDocumentIdentifier;
+import org.eclipse.lsp4j.WorkspaceEdit;
+import org.eclipse.lsp4j.jsonrpc.messages.Either;
+import org.junit.AfterClass;
+import org.junit.BeforeClass;
+import org.junit.Test;
+
+/** Hover, references, rename, outline and folding across the intralogistics files. */
+public class NavigationLspTest {
+    private static Path workspace;
+    private static LspClient client;
+    private static String mironText;
+    private static String mironUri;
+
+    @BeforeClass
+    public static void setUp() throws Exception {
+        workspace = Workspaces.copyOfExample("intralogistics");
+        client = new LspClient();
+        client.initialize(workspace);
+        mironText = Files.readString(workspace.resolve("intralogistics.miron")) + "\nrule r2 : roqme.safety < 0.3 implies task = task::dock\n";
+        mironUri = client.open(workspace.resolve("intralogistics.miron"), mironText);
+        client.awaitDiagnostics(mironUri, d -> true);
+    }
+
+    @AfterClass
+    public static void tearDown() throws Exception {
+        client.close();
+        Workspaces.delete(workspace);
+    }
+
+    private static String hover(String uri, String text, String after) throws Exception {
+        Hover hover = client.server().getTextDocumentService()
+                .hover(new HoverParams(new TextDocumentIdentifier(uri), IntralogisticsLspTest.positionAfter(text, after)))
+                .get(60, TimeUnit.SECONDS);
+        return hover == null || hover.getContents() == null ? "" : hover.getContents().getRight().getValue();
+    }
+
+    @Test
+    public void hoverShowsDocumentationValuesImpactsAndPorts() throws Exception {
+        String property = hover(mironUri, mironText, "10 affects roqme.safe");
+        assertTrue(property, property.contains("Safety of the navigation around people and obstacles."));
+        String varpoint = hover(mironUri, mironText, "implies tas");
+        assertTrue(varpoint, varpoint.contains("pick : main.PickDeliverCharge"));
+        String sampled = hover(mironUri, mironText, "@varpoint maxVelo");
+        assertTrue(sampled, sampled.contains("`100 affects roqme.mission_completion++`"));
+        String literal = hover(mironUri, mironText, "implies task = task::do");
+        assertTrue(literal, literal.contains("dock : main.Charge"));
+        String context = hover(mironUri, mironText, "roqme.power_auto");
+        assertTrue(context, context.contains("How long the robot can keep working"));
+
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btText = Files.readString(bt);
+        String btUri = client.open(bt, btText);
+        client.awaitDiagnostics(btUri, d -> true);
+        String tree = hover(btUri, btText, "<SubTreePlus ID=\"Go");
+        assertTrue(tree, tree.contains("`x_input`"));
+        String action = hover(btUri, btText, "<Action ID=\"objectdr");
+        assertTrue(action, action.contains("obj_index"));
+    }
+
+    @Test
+    public void referencesOfARoqmePropertyAreFoundInTheMiron() throws Exception {
+        Path roqme = workspace.resolve("intralogistics.roqme");
+        String text = Files.readString(roqme);
+        String uri = client.open(roqme, text);
+        client.awaitDiagnostics(uri, d -> true);
+        ReferenceParams params = new ReferenceParams(new TextDocumentIdentifier(uri),
+                IntralogisticsLspTest.positionAfter(text, "property saf"), new ReferenceContext(false));
+        List<? extends Location> references = client.server().getTextDocumentService().references(params)
+                .get(60, TimeUnit.SECONDS);
+        assertTrue(references.toString(), references.stream().anyMatch(l -> l.getUri().equals(mironUri)));
+    }
+
+    @Test
+    public void renameATreeFromTheMironEditsBothFiles() throws Exception {
+        String text = Files.readString(workspace.resolve("intralogistics.miron"));
+        String uri = client.open(workspace.resolve("intralogistics.miron"), text);
+        client.awaitDiagnostics(uri, d -> true);
+        WorkspaceEdit edit = client.server().getTextDocumentService().rename(new RenameParams(
+                new TextDocumentIdentifier(uri), IntralogisticsLspTest.positionAfter(text, "dock : main.Cha"), "Dock"))
+                .get(60, TimeUnit.SECONDS);
+        Path bt = workspace.resolve("intralogistics.bt");
+        String renamedTree = TextEdits.apply(Files.readString(bt), edit.getChanges().get(LspClient.uri(bt)));
+        assertTrue(renamedTree.contains("<BehaviorTree ID=\"Dock\">"));
+        assertFalse(renamedTree.contains("ID=\"Charge\""));
+        assertTrue(renamedTree.contains("<SubTreePlus ID=\"Dock\" name=\"charge_step\"/>"));
+        String renamedModel = TextEdits.apply(text, edit.getChanges().get(uri));
+        assertTrue(renamedModel.contains("dock : main.Dock,"));
+        // The edits are not applied: the shared workspace stays as it was for the other tests.
+    }
+
+    @Test
+    public void outlineListsTheDeclarations() throws Exception {
+        List<Either<SymbolInformation, DocumentSymbol>> symbols = client.server().getTextDocumentService()
+                .documentSymbol(new DocumentSymbolParams(new TextDocumentIdentifier(mironUri))).get(60, TimeUnit.SECONDS);
+        List<String> names = symbols.stream().map(s -> s.isLeft() ? s.getLeft().getName() : s.getRight().getName())
+                .collect(Collectors.toList());
+        assertTrue(names.toString(), names.containsAll(List.of("task", "maxVelocity", "noBattery")));
+    }
+
+    @Test
+    public void semanticTokensOfABehaviourTreeWithTreeNodesModel() throws Exception {
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btUri = client.open(bt, Files.readString(bt));
+        client.awaitDiagnostics(btUri, d -> true);
+        assertNotNull(client.server().getTextDocumentService()
+                .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(btUri))).get(60, TimeUnit.SECONDS));
+    }
+
+    @Test
+    public void foldingRangesCoverTheTrees() throws Exception {
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btUri = client.open(bt, Files.readString(bt));
+        client.awaitDiagnostics(btUri, d -> true);
+        List<FoldingRange> ranges = client.server().getTextDocumentService()
+                .foldingRange(new FoldingRangeRequestParams(new TextDocumentIdentifier(btUri))).get(60, TimeUnit.SECONDS);
+        assertFalse(ranges.isEmpty());
+    }
+}
