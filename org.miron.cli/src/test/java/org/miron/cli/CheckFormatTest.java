@@ -14,6 +14,7 @@ import java.util.List;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.RepositoryRoot;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -21,7 +22,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 
 /** `miron check` on real files: issue codes in the text lines, and `--format json` for tools. */
 public class CheckFormatTest {
-    private static final File ROOT = new File(System.getProperty("miron.root", ".."));
+    private static final File ROOT = RepositoryRoot.path().toFile();
     private static final ObjectMapper JSON = new ObjectMapper();
 
     @Rule

@@ -5,10 +5,11 @@ import java.io.StringWriter;
 import java.nio.file.Path;
 
 import picocli.CommandLine;
+import org.miron.testkit.RepositoryRoot;
 
 /** Runs the `miron` command line in-process and keeps what it printed. */
 final class Cli {
-    static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    static final Path ROOT = RepositoryRoot.path();
 
     final StringWriter out = new StringWriter();
     final StringWriter err = new StringWriter();

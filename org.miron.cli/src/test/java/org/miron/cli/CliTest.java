@@ -12,11 +12,12 @@ import java.nio.file.Path;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.RepositoryRoot;
 
 
 /** The `miron` command line as a user runs it: exit codes and what it prints. */
 public class CliTest {
-    private static final File ROOT = new File(System.getProperty("miron.root", ".."));
+    private static final File ROOT = RepositoryRoot.path().toFile();
 
     @Rule
     public TemporaryFolder temp = new TemporaryFolder();

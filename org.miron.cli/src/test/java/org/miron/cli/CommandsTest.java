@@ -14,7 +14,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.Ports;
+import org.miron.testkit.runtime.TestModels;
 import picocli.CommandLine;
 
 public class CommandsTest {
@@ -40,11 +40,8 @@ public class CommandsTest {
 
     @Test
     public void engineWithoutMinizincFailsWithAClearMessage() throws Exception {
-        Path io = tmp.getRoot().toPath().resolve("testbot.io.json");
-        for (String f : new String[] {"testbot.io.json", "testbot.mzn", "testbot.dzn"}) {
-            Files.copy(getClass().getResourceAsStream("/models/" + f), tmp.getRoot().toPath().resolve(f));
-        }
-        Endpoints ep = Ports.endpoints();
+        Path io = TestModels.copy("testbot", tmp.getRoot().toPath());
+        Endpoints ep = Endpoints.freeLoopback();
         String[] r = run(new EngineCommand(), "--io", io.toString(), "--minizinc", "/nonexistent/minizinc",
                 "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--request", ep.request(),
                 "--decision-log", tmp.getRoot() + "/d.jsonl");
@@ -78,7 +75,7 @@ public class CommandsTest {
 
     @Test
     public void playPublishesAScenarioThroughABroker() throws Exception {
-        Endpoints ep = Ports.endpoints();
+        Endpoints ep = Endpoints.freeLoopback();
         Path scenario = tmp.newFile("s.json").toPath();
         Files.writeString(scenario, "[{\"at\": 0, \"estimate\": {\"name\": \"safety\", \"value\": 0.4}},"
                 + " {\"at\": 50, \"context\": {\"name\": \"Door\", \"type\": \"event\", \"value\": true}}]");
@@ -96,7 +93,7 @@ public class CommandsTest {
 
     @Test
     public void brokerOnABusyPortFailsWithAClearMessage() throws Exception {
-        Endpoints ep = Ports.endpoints();
+        Endpoints ep = Endpoints.freeLoopback();
         try (org.miron.runtime.broker.Broker first = new org.miron.runtime.broker.Broker(ep).start()) {
             String[] r = run(new BrokerCommand(), "--request", ep.request(), "--skill", ep.skill(),
                     "--bus-in", ep.busIn(), "--bus-out", ep.busOut());

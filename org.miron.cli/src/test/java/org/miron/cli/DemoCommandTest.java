@@ -15,6 +15,7 @@ import org.junit.BeforeClass;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.RepositoryRoot;
 
 import picocli.CommandLine;
 
@@ -24,7 +25,7 @@ import picocli.CommandLine;
  * and the report shows them.
  */
 public class DemoCommandTest {
-    private static final File ROOT = new File(System.getProperty("miron.root", ".."));
+    private static final File ROOT = RepositoryRoot.path().toFile();
 
     @Rule
     public TemporaryFolder temp = new TemporaryFolder();

@@ -12,8 +12,8 @@ import java.util.concurrent.TimeUnit;
 
 import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.junit.Test;
-import org.miron.lsp.server.LspClient;
-import org.miron.lsp.server.Workspaces;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 import picocli.CommandLine;
 
@@ -32,7 +32,7 @@ public class LspCommandTest {
 
     @Test
     public void answersAnEditorOverStdio() throws Exception {
-        Path workspace = Workspaces.copyOfExample("intralogistics");
+        Path workspace = Examples.copy("intralogistics");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         Process process = new ProcessBuilder(java, "-Xss4m", "-cp",
                 System.getProperty("miron.cli.classpath", System.getProperty("java.class.path")),
@@ -49,7 +49,7 @@ public class LspCommandTest {
             assertEquals(0, process.exitValue());
         } finally {
             process.destroyForcibly();
-            Workspaces.delete(workspace);
+            Examples.delete(workspace);
         }
     }
 

@@ -16,7 +16,6 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.Ports;
 import org.miron.runtime.bus.BusClient;
 import org.zeromq.ZMQ;
 import picocli.CommandLine;
@@ -40,7 +39,7 @@ public class ProcessShutdownTest {
 
     @Test
     public void brokerRunsWithoutStdinAndStopsCleanlyOnSigterm() throws Exception {
-        Endpoints ep = Ports.endpoints();
+        Endpoints ep = Endpoints.freeLoopback();
         Path err = tmp.getRoot().toPath().resolve("stderr.txt");
         Process p = new ProcessBuilder(List.of(
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", classpath(),

@@ -13,13 +13,14 @@ import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.generator.standalone.BatchGeneration;
 import org.miron.generator.standalone.Diagnostic;
 import org.miron.generator.standalone.ModelLoader;
+import org.miron.testkit.RepositoryRoot;
 
 /**
  * Generates and checks models through the library the command line uses (ModelLoader,
  * BatchGeneration) and keeps the diagnostics as text, one per line.
  */
 final class Toolchain {
-    static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    static final Path ROOT = RepositoryRoot.path();
 
     private final StringBuilder messages = new StringBuilder();
 

@@ -14,8 +14,9 @@ import java.util.stream.Stream;
 
 import org.junit.Rule;
 import org.junit.Test;
-import org.miron.bt.tests.BtCpp4;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.Btcpp4Loader;
+import org.miron.testkit.Btcpp4Python;
 
 /**
  * `--bt-format 4`: the examples and the weaver's golden cases woven as BehaviorTree.CPP 4 trees,
@@ -75,8 +76,8 @@ public class WovenVersion4Test {
             woven.add(tree);
         }
         assertTrue("woven v4 trees: " + woven.size(), woven.size() >= 15);
-        BtCpp4.assumeInstalled();
-        for (Map.Entry<java.io.File, BtCpp4.Verdict> verdict : BtCpp4.load(woven.stream().map(Path::toFile).toList()).entrySet()) {
+        Btcpp4Python.assumeInstalled();
+        for (Map.Entry<java.io.File, Btcpp4Loader.Verdict> verdict : Btcpp4Loader.load(woven.stream().map(Path::toFile).toList()).entrySet()) {
             assertTrue(verdict.getKey() + ": " + verdict.getValue().message + "\n" + Files.readString(verdict.getKey().toPath()),
                     verdict.getValue().loaded);
         }

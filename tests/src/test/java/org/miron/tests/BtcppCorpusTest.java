@@ -17,6 +17,7 @@ import java.util.stream.Stream;
 import org.junit.Test;
 import org.miron.generator.standalone.Diagnostic;
 import org.miron.generator.standalone.ModelLoader;
+import org.miron.testkit.RepositoryRoot;
 
 /**
  * BehaviorTree.CPP 3.8.7's own trees (docs, examples, tests) with the real library's verdicts
@@ -26,7 +27,7 @@ import org.miron.generator.standalone.ModelLoader;
  * reason.
  */
 public class BtcppCorpusTest {
-    private static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    private static final Path ROOT = RepositoryRoot.path();
     private static final Path VENDORED = ROOT.resolve("tests/src/test/resources/btcpp3-corpus");
 
     /** file → why our verdict differs from BehaviorTree.CPP 3.8.7's. Keep it tiny. */

@@ -25,6 +25,7 @@ import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.MiniZincBackend;
 import org.miron.runtime.engine.SolveResult;
 import org.miron.runtime.engine.VariationPoint;
+import org.miron.testkit.RepositoryRoot;
 
 
 /**
@@ -33,7 +34,7 @@ import org.miron.runtime.engine.VariationPoint;
  * the BT executor: the robot does what the decision says.
  */
 public class GenerateSolveRunTest {
-    private static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    private static final Path ROOT = RepositoryRoot.path();
 
     @ClassRule
     public static TemporaryFolder temp = new TemporaryFolder();

@@ -25,6 +25,7 @@ import org.miron.runtime.engine.EngineOptions;
 import org.miron.runtime.skill.ParameterChange;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.testkit.RepositoryRoot;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
@@ -34,7 +35,7 @@ import com.fasterxml.jackson.databind.JsonNode;
  * estimates published on the bus as the metrics provider would.
  */
 public class IntralogisticsLoopTest {
-    private static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    private static final Path ROOT = RepositoryRoot.path();
     private static final String NS = "Intralogistics";
 
     @ClassRule

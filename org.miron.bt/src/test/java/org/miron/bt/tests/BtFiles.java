@@ -30,10 +30,6 @@ final class BtFiles {
     private BtFiles() {
     }
 
-    static File repositoryRoot() {
-        return new File(System.getProperty("miron.root", ".."));
-    }
-
     /** The .bt files of a test-resource folder (not its subfolders), sorted. */
     static List<File> filesIn(String folder) {
         File[] files = new File(RESOURCES, folder).listFiles((dir, name) -> name.endsWith(".bt"));

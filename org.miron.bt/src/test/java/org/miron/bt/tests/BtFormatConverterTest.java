@@ -27,6 +27,8 @@ import org.miron.bt.formats.BtFormatConverter;
 import org.miron.bt.formats.Conversion;
 import org.miron.bt.formatting2.BtFormatting;
 import org.miron.bt.validation.BtIssueCodes;
+import org.miron.testkit.Btcpp4Loader;
+import org.miron.testkit.Btcpp4Python;
 
 /** miron convert's library: v3 → v4 → v3 round trips, v4 output valid here and in the real library. */
 public class BtFormatConverterTest {
@@ -168,7 +170,7 @@ public class BtFormatConverterTest {
 
     @Test
     public void convertedFilesLoadInTheRealVersion4Library() throws Exception {
-        BtCpp4.assumeInstalled();
+        Btcpp4Python.assumeInstalled();
         List<File> outputs = new ArrayList<>();
         for (File file : validFiles(3)) {
             String source = Files.readString(file.toPath());
@@ -181,7 +183,7 @@ public class BtFormatConverterTest {
             outputs.add(output);
         }
         assertTrue(outputs.size() >= 20);
-        for (Map.Entry<File, BtCpp4.Verdict> entry : BtCpp4.load(outputs).entrySet()) {
+        for (Map.Entry<File, Btcpp4Loader.Verdict> entry : Btcpp4Loader.load(outputs).entrySet()) {
             assertTrue(entry.getKey().getName() + ": " + entry.getValue().message + "\n"
                     + Files.readString(entry.getKey().toPath()), entry.getValue().loaded);
         }

@@ -20,6 +20,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.bt.validation.BtIssueCodes;
+import org.miron.testkit.RepositoryRoot;
 
 /**
  * Every diagnostic of the BT language carries a code from {@link BtIssueCodes}, and the codes
@@ -53,7 +54,7 @@ public class IssueCodesTest {
 
     @Test
     public void everyCodeIsDocumented() throws Exception {
-        String doc = Files.readString(new File(BtFiles.repositoryRoot(), "docs/issue-codes.md").toPath());
+        String doc = Files.readString(RepositoryRoot.file("docs/issue-codes.md").toPath());
         for (String code : codes()) {
             assertTrue(code + " is not in docs/issue-codes.md", doc.contains("| `" + code + "` |"));
         }

@@ -16,6 +16,7 @@ import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
 import org.miron.bt.bt.Sequence;
 import org.miron.bt.bt.SubtreePlus;
+import org.miron.testkit.RepositoryRoot;
 
 /**
  * The seed's Figure 1, verbatim. It is a fragment: GoTo and PickDeliverCharge are defined
@@ -62,7 +63,7 @@ public class SeedFigure1Test {
 
     @Test
     public void theCompletedExampleResolvesEveryTree() {
-        File example = new File(BtFiles.repositoryRoot(), "examples/intralogistics/intralogistics.bt");
+        File example = RepositoryRoot.file("examples/intralogistics/intralogistics.bt");
         BTModel model = BtFiles.model(BtFiles.load(example));
         for (String tree : List.of("Main", "Charge", "Deliver", "Pick", "PickDeliverCharge", "DeliverCharge", "GoTo")) {
             assertTrue(tree, model.getTrees().stream().anyMatch(t -> tree.equals(t.getName())));

@@ -19,6 +19,7 @@ import org.junit.runner.RunWith;
 import org.junit.runners.Parameterized;
 import org.junit.runners.Parameterized.Parameters;
 import org.miron.bt.formatting2.BtFormatting;
+import org.miron.testkit.RepositoryRoot;
 
 /**
  * Every valid file (one per language feature, plus the examples) parses and validates without
@@ -30,7 +31,7 @@ public class ValidFilesTest {
     @Parameters(name = "{0}")
     public static Collection<Object[]> files() {
         List<File> files = new ArrayList<>(BtFiles.filesIn("valid"));
-        files.add(new File(BtFiles.repositoryRoot(), "examples/intralogistics/intralogistics.bt"));
+        files.add(RepositoryRoot.file("examples/intralogistics/intralogistics.bt"));
         return files.stream().map(f -> new Object[] { f.getName(), f }).collect(Collectors.toList());
     }
 

@@ -18,10 +18,12 @@ import org.miron.bt.formats.BtFormatConverter;
 import org.miron.bt.formats.Conversion;
 import org.miron.bt.formatting2.BtFormatting;
 import org.miron.executor.BtLoader;
+import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
-import org.miron.runtime.Ports;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.testkit.RepositoryRoot;
+import org.miron.testkit.runtime.TestModels;
 
 /**
  * The one-JVM demo end to end on loopback with the real minizinc: the battery runs low and the
@@ -29,7 +31,7 @@ import org.miron.runtime.skill.SkillTable;
  * it and the report shows it.
  */
 public class DemoTest {
-    private static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    private static final Path ROOT = RepositoryRoot.path();
     /** The woven intralogistics tree of the executor's tests. */
     private static final Path WOVEN = ROOT.resolve("org.miron.executor/src/test/resources/executor/intralogistics.ext.xml");
 
@@ -58,11 +60,11 @@ public class DemoTest {
         SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
         SkillTable.Entry hand = new SkillTable.Entry(100, "SUCCESS", NullNode.getInstance(), Json.object());
         StringWriter console = new StringWriter();
-        Demo demo = new Demo(ROOT.resolve("org.miron.runtime/src/test/resources/models/testbot.io.json"),
+        Demo demo = new Demo(TestModels.copy("testbot", temp.newFolder("model" + version).toPath()),
                 tree,
                 Scenario.load(Path.of("src/test/resources/demo/short.scenario.json")),
                 new SkillTable(Map.of("navigate", move, "objectpick", hand, "objectdrop", hand)),
-                temp.getRoot().toPath(), Ports.endpoints(), new PrintWriter(console, true));
+                temp.getRoot().toPath(), Endpoints.freeLoopback(), new PrintWriter(console, true));
 
         Demo.Result result = demo.run();
 

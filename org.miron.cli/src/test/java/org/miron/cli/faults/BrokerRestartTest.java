@@ -14,17 +14,17 @@ import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.engine.Engine;
-import org.miron.runtime.engine.EngineFixture;
 import org.miron.runtime.engine.IoModel;
-import org.miron.runtime.faults.TestbotRules;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.player.ScenarioPlayer;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.TestbotRules;
 
 /**
  * Issue 10, item 5: the broker process is killed (-9) and restarted with an empty cache. Without

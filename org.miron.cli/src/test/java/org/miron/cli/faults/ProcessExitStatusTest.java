@@ -13,11 +13,11 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.Ports;
 import org.miron.runtime.broker.Broker;
 import org.miron.cli.MironCli;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.testkit.runtime.TestModels;
 import picocli.CommandLine;
 
 /**
@@ -28,7 +28,7 @@ public class ProcessExitStatusTest {
     private static final long TIMEOUT = 30_000;
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
-    private final Endpoints ep = Ports.endpoints();
+    private final Endpoints ep = Endpoints.freeLoopback();
     private Path dir;
 
     @Before
@@ -69,9 +69,7 @@ public class ProcessExitStatusTest {
 
     @Test
     public void engine() throws Exception {
-        for (String ext : new String[] {".io.json", ".mzn", ".dzn"}) {
-            Files.copy(getClass().getResourceAsStream("/models/testbot" + ext), dir.resolve("testbot" + ext));
-        }
+        TestModels.copy("testbot", dir);
         try (Broker broker = new Broker(ep).start()) {
             assertSigtermStatus("engine", "engine: model", "--io", dir.resolve("testbot.io.json").toString(),
                     "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--request", ep.request(),

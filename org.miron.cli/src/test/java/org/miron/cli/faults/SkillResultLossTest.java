@@ -21,7 +21,6 @@ import org.miron.executor.skills.SkillRequest;
 import org.miron.executor.skills.SkillResult;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
-import org.miron.runtime.Ports;
 import org.miron.runtime.broker.Broker;
 import org.miron.runtime.live.LiveExecutor;
 import org.miron.runtime.skill.SkillDeadlines;
@@ -38,7 +37,7 @@ public class SkillResultLossTest {
     private static final long TIMEOUT = 30_000;
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
-    private final Endpoints ep = Ports.endpoints();
+    private final Endpoints ep = Endpoints.freeLoopback();
     private Broker broker;
     private RuntimeProcess skills;
     private ZmqSkillClient client;

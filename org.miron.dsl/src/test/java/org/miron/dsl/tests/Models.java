@@ -15,6 +15,7 @@ import org.eclipse.xtext.validation.CheckMode;
 import org.eclipse.xtext.validation.IResourceValidator;
 import org.eclipse.xtext.validation.Issue;
 import org.miron.dsl.MironStandaloneSetup;
+import org.miron.testkit.RepositoryRoot;
 
 import com.google.inject.Injector;
 
@@ -34,8 +35,7 @@ final class Models {
     }
 
     static File root() {
-        String root = System.getProperty("miron.root");
-        return root != null ? new File(root) : new File("..");
+        return RepositoryRoot.path().toFile();
     }
 
     /** A fresh resource set holding the file and, after resolving, everything it imports. */

@@ -24,6 +24,7 @@ import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.RepositoryRoot;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.BundleException;
@@ -132,7 +133,7 @@ public class EquinoxTest {
     }
 
     private static Path example(String name) {
-        return Path.of(System.getProperty("miron.root"), "examples", "intralogistics", name);
+        return RepositoryRoot.resolve("examples/intralogistics").resolve(name);
     }
 
     @Test

@@ -17,6 +17,8 @@ import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** Completion in the three languages, on unsaved buffers of the intralogistics example. */
 public class CompletionLspTest {
@@ -25,7 +27,7 @@ public class CompletionLspTest {
 
     @BeforeClass
     public static void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
+        workspace = Examples.copy("intralogistics");
         client = new LspClient();
         client.initialize(workspace);
     }
@@ -33,7 +35,7 @@ public class CompletionLspTest {
     @AfterClass
     public static void tearDown() throws Exception {
         client.close();
-        Workspaces.delete(workspace);
+        Examples.delete(workspace);
     }
 
     /** Labels proposed when the buffer of a file is `text`, the caret just after `after`. */

@@ -20,6 +20,8 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.miron.generator.standalone.Diagnostic.Severity;
 import org.miron.generator.standalone.ModelLoader;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** The server's diagnostics are `miron check`'s, and follow the files on disk. */
 public class DiagnosticsLspTest {
@@ -119,7 +121,7 @@ public class DiagnosticsLspTest {
 
     @Test
     public void theHospitalExampleHasNoErrorsEither() throws Exception {
-        Path hospital = Workspaces.copyOfExample("hospital-delivery");
+        Path hospital = Examples.copy("hospital-delivery");
         try (LspClient other = new LspClient()) {
             other.initialize(hospital);
             for (String file : List.of("hospital.miron", "hospital.roqme", "hospital.bt")) {
@@ -128,7 +130,7 @@ public class DiagnosticsLspTest {
                 assertFalse(file + ": " + other.published(uri), IntralogisticsLspTest.hasErrors(other.published(uri)));
             }
         } finally {
-            Workspaces.delete(hospital);
+            Examples.delete(hospital);
         }
     }
 

@@ -12,6 +12,8 @@ import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /**
  * Issue 22, editor help: hovering an observation shows each action's likelihood ratio and
@@ -26,7 +28,7 @@ public class EvidenceHoverLspTest {
 
     @BeforeClass
     public static void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
+        workspace = Examples.copy("intralogistics");
         client = new LspClient();
         client.initialize(workspace);
         roqmeText = Files.readString(workspace.resolve("intralogistics.roqme"))
@@ -39,7 +41,7 @@ public class EvidenceHoverLspTest {
     @AfterClass
     public static void tearDown() throws Exception {
         client.close();
-        Workspaces.delete(workspace);
+        Examples.delete(workspace);
     }
 
     private static String hover(String after) throws Exception {

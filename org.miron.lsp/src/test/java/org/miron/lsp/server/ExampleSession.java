@@ -3,6 +3,8 @@ package org.miron.lsp.server;
 import java.nio.file.Path;
 
 import org.junit.rules.ExternalResource;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /**
  * A test's own copy of an example folder with an LSP client initialized on it, closed and deleted
@@ -19,7 +21,7 @@ public final class ExampleSession extends ExternalResource {
 
     @Override
     protected void before() throws Throwable {
-        workspace = Workspaces.copyOfExample(example);
+        workspace = Examples.copy(example);
         client = new LspClient();
         client.initialize(workspace);
     }
@@ -28,7 +30,7 @@ public final class ExampleSession extends ExternalResource {
     protected void after() {
         try {
             client.close();
-            Workspaces.delete(workspace);
+            Examples.delete(workspace);
         } catch (Exception e) {
             throw new IllegalStateException("cannot tear down the LSP session on " + workspace, e);
         }

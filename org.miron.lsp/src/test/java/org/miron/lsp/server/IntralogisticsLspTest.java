@@ -26,6 +26,8 @@ import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.junit.After;
 import org.junit.Before;
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** The intralogistics example through a real LSP client: the scenarios of the language-server issue. */
 public class IntralogisticsLspTest {
@@ -37,7 +39,7 @@ public class IntralogisticsLspTest {
 
     @Before
     public void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
+        workspace = Examples.copy("intralogistics");
         miron = workspace.resolve("intralogistics.miron");
         roqme = workspace.resolve("intralogistics.roqme");
         bt = workspace.resolve("intralogistics.bt");
@@ -48,7 +50,7 @@ public class IntralogisticsLspTest {
     @After
     public void tearDown() throws Exception {
         client.close();
-        Workspaces.delete(workspace);
+        Examples.delete(workspace);
     }
 
     static boolean hasErrors(List<Diagnostic> diagnostics) {

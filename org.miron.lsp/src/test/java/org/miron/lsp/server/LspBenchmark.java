@@ -10,6 +10,8 @@ import java.util.concurrent.TimeUnit;
 
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /**
  * `gradle :org.miron.lsp:lspBenchmark`: latencies of the language server seen by an LSP client
@@ -32,7 +34,7 @@ public final class LspBenchmark {
     }
 
     private static void benchmark(String example) throws Exception {
-        Path workspace = Workspaces.copyOfExample(example);
+        Path workspace = Examples.copy(example);
         try {
             Path miron = Files.list(workspace).filter(p -> p.toString().endsWith(".miron")).findFirst().get();
             Path roqme = Files.list(workspace).filter(p -> p.toString().endsWith(".roqme")).findFirst().get();
@@ -91,7 +93,7 @@ public final class LspBenchmark {
             print(example + ": completion after 'affects '", completion);
             client.close();
         } finally {
-            Workspaces.delete(workspace);
+            Examples.delete(workspace);
         }
     }
 

@@ -28,6 +28,8 @@ import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** Hover, references, rename, outline and folding across the intralogistics files. */
 public class NavigationLspTest {
@@ -38,7 +40,7 @@ public class NavigationLspTest {
 
     @BeforeClass
     public static void setUp() throws Exception {
-        workspace = Workspaces.copyOfExample("intralogistics");
+        workspace = Examples.copy("intralogistics");
         client = new LspClient();
         client.initialize(workspace);
         mironText = Files.readString(workspace.resolve("intralogistics.miron")) + "\nrule r2 : roqme.safety < 0.3 implies task = task::dock\n";
@@ -49,7 +51,7 @@ public class NavigationLspTest {
     @AfterClass
     public static void tearDown() throws Exception {
         client.close();
-        Workspaces.delete(workspace);
+        Examples.delete(workspace);
     }
 
     private static String hover(String uri, String text, String after) throws Exception {

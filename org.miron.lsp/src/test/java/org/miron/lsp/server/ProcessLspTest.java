@@ -12,6 +12,8 @@ import java.util.concurrent.TimeUnit;
 
 import org.eclipse.lsp4j.InitializeResult;
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** The language server as an editor starts it: a child process speaking LSP on stdio. */
 public class ProcessLspTest {
@@ -27,7 +29,7 @@ public class ProcessLspTest {
 
     @Test
     public void answersOverStdioAndExitsCleanly() throws Exception {
-        Path workspace = Workspaces.copyOfExample("intralogistics");
+        Path workspace = Examples.copy("intralogistics");
         Process process = new ProcessBuilder(serverCommand())
                 .redirectError(ProcessBuilder.Redirect.appendTo(new File(workspace.toFile(), "server.log"))).start();
         try {
@@ -44,7 +46,7 @@ public class ProcessLspTest {
             assertEquals(0, process.exitValue());
         } finally {
             process.destroyForcibly();
-            Workspaces.delete(workspace);
+            Examples.delete(workspace);
         }
     }
 }

@@ -19,6 +19,8 @@ import org.eclipse.lsp4j.Position;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.junit.Rule;
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** Bad input never kills the server: every request still gets an answer afterwards. */
 public class RobustnessLspTest {
@@ -109,7 +111,7 @@ public class RobustnessLspTest {
 
     @Test
     public void onlyXmlFilesThatAreTreesAreBehaviourTrees() throws Exception {
-        Path other = Workspaces.copyOfExample("intralogistics");
+        Path other = Examples.copy("intralogistics");
         try (LspClient fresh = new LspClient()) {
             Files.writeString(other.resolve("pom.xml"), "<project><modelVersion>4.0.0</modelVersion></project>\n");
             Files.writeString(other.resolve("tree.xml"), "<?xml version=\"1.0\"?>\n<root main_tree_to_execute=\"T\">"
@@ -122,14 +124,14 @@ public class RobustnessLspTest {
             assertTrue(String.valueOf(fresh.published(pom)), fresh.published(pom) == null || fresh.published(pom).isEmpty());
             assertAlive();
         } finally {
-            Workspaces.delete(other);
+            Examples.delete(other);
         }
     }
 
     /** Issue 17: BehaviorTree.CPP .xml trees include each other in the editor as they do in `miron check`. */
     @Test
     public void xmlTreesIncludeXmlTrees() throws Exception {
-        Path other = Workspaces.copyOfExample("intralogistics");
+        Path other = Examples.copy("intralogistics");
         try (LspClient fresh = new LspClient()) {
             Files.createDirectories(other.resolve("sub"));
             Files.writeString(other.resolve("sub/child.xml"), "<root main_tree_to_execute=\"Child\">"
@@ -146,7 +148,7 @@ public class RobustnessLspTest {
             assertTrue(String.valueOf(fresh.published(child)), fresh.published(child).isEmpty());
             assertAlive();
         } finally {
-            Workspaces.delete(other);
+            Examples.delete(other);
         }
     }
 

@@ -7,13 +7,15 @@ import java.net.Socket;
 import java.nio.file.Path;
 
 import org.junit.Test;
+import org.miron.testkit.Examples;
+import org.miron.testkit.lsp.LspClient;
 
 /** `--socket PORT`: the server listens on the loopback interface and serves a client that connects. */
 public class SocketLspTest {
 
     @Test
     public void servesAClientOnLoopback() throws Exception {
-        Path workspace = Workspaces.copyOfExample("intralogistics");
+        Path workspace = Examples.copy("intralogistics");
         try (ServerSocket listening = MironLanguageServer.bindLoopback(0)) {
             assertTrue(listening.getInetAddress().isLoopbackAddress());
             Thread acceptor = new Thread(() -> {
@@ -32,7 +34,7 @@ public class SocketLspTest {
                 client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
             }
         } finally {
-            Workspaces.delete(workspace);
+            Examples.delete(workspace);
         }
     }
 }

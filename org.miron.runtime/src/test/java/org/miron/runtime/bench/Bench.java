@@ -20,6 +20,7 @@ import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.SolveResult;
 import org.miron.runtime.engine.SolverBackend;
+import org.miron.testkit.RepositoryRoot;
 
 /**
  * {@code gradle :org.miron.runtime:bench [-Pbackends=minizinc,native] [-Prounds=N]}: prints, per
@@ -37,7 +38,7 @@ public final class Bench {
         List<String> backends = args.length > 0 && !args[0].isBlank() ? List.of(args[0].split(",")) : Backends.names();
         int rounds = args.length > 1 ? Integer.parseInt(args[1]) : 40;
         Path dir = Files.createTempDirectory("miron-bench");
-        Path root = Path.of(System.getProperty("miron.root", ".")).toAbsolutePath().normalize();
+        Path root = RepositoryRoot.path();
         System.out.println("MIRoN bench: backends " + backends + ", " + rounds + " rounds (fewer on large models), "
                 + Runtime.getRuntime().availableProcessors() + " cores");
 

@@ -11,18 +11,17 @@ import java.util.List;
 import org.junit.After;
 import org.junit.Before;
 import org.junit.Test;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.Connect;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.Ports;
 import org.miron.runtime.bus.BusClient;
+import org.miron.testkit.runtime.BusProbe;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
 
 public class BrokerTest {
     private static final long TIMEOUT = 10_000;
-    private final Endpoints ep = Ports.endpoints();
+    private final Endpoints ep = Endpoints.freeLoopback();
     private Broker broker;
     private BusClient pub;
     private final ZContext ctx = new ZContext();
@@ -122,7 +121,7 @@ public class BrokerTest {
         java.nio.file.Path file = java.nio.file.Files.createTempFile("miron-cache", ".json");
         try {
             java.nio.file.Files.writeString(file, "[[\"cm9xbWUuZXN0aW1hdGU=\"]] trailing");
-            try (Broker other = new Broker(Ports.endpoints(), file)) {
+            try (Broker other = new Broker(Endpoints.freeLoopback(), file)) {
                 other.start();
                 throw new AssertionError("broker started on a broken cache file");
             } catch (IllegalStateException e) {

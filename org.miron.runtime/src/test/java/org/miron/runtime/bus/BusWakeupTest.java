@@ -13,7 +13,6 @@ import java.util.concurrent.TimeUnit;
 import org.junit.After;
 import org.junit.Test;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.Ports;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -26,7 +25,7 @@ import org.zeromq.ZMQ;
 public class BusWakeupTest {
     private static final long POLL_MS = 60_000;
     private static final int DEADLINE_MS = 10_000;
-    private final Endpoints ep = Ports.endpoints();
+    private final Endpoints ep = Endpoints.freeLoopback();
     private final ZContext ctx = new ZContext();
     private BusClient client;
 

@@ -13,10 +13,11 @@ import org.junit.Before;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.skill.ParameterChange;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.EngineFixture;
 
 /** End to end over real sockets and the real minizinc: inputs in, adaptations out. */
 public class EngineAdaptationTest {

@@ -11,6 +11,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.bus.Topics;
+import org.miron.testkit.runtime.EngineFixture;
 
 /** btport and decision-only bindings, numeric overrides, empty namespace (portbot model). */
 public class EngineBindingsTest {

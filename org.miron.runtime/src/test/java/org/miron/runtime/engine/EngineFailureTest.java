@@ -15,8 +15,9 @@ import org.junit.Before;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.bus.Topics;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.EngineFixture;
 
 /**
  * Injected failures: the engine keeps the last good configuration, reports on miron.status,

@@ -11,6 +11,7 @@ import java.util.logging.Logger;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.bus.Topics;
+import org.miron.testkit.runtime.EngineFixture;
 
 /**
  * Soak run of the engine on a live bus ({@code gradle :org.miron.runtime:soak -Pminutes=N}): broker,

@@ -15,6 +15,7 @@ import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.testkit.runtime.EngineFixture;
 
 /**
  * Fault mode of the soak ({@code gradle :org.miron.runtime:soak -Pfaults=true -Pminutes=N}): broker,

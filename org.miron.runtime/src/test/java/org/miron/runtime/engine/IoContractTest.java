@@ -25,6 +25,8 @@ import org.junit.BeforeClass;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.RepositoryRoot;
+import org.miron.testkit.runtime.TestModels;
 
 /**
  * The engine's side of the io.json contract (docs/io-json.schema.json, the schema the generator's
@@ -32,7 +34,7 @@ import org.junit.rules.TemporaryFolder;
  * ways the engine cannot use are refused when loading.
  */
 public class IoContractTest {
-    private static final Path ROOT = Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
+    private static final Path ROOT = RepositoryRoot.path();
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private static Schema schema;
 
@@ -52,13 +54,7 @@ public class IoContractTest {
 
     /** The model's .io.json, .mzn and .dzn copied to the temporary folder; returns the io.json. */
     private Path copy(String model) throws IOException {
-        Path dir = tmp.getRoot().toPath();
-        for (String ext : List.of(".io.json", ".mzn", ".dzn")) {
-            try (InputStream in = IoContractTest.class.getResourceAsStream("/models/" + model + ext)) {
-                Files.copy(in, dir.resolve(model + ext), StandardCopyOption.REPLACE_EXISTING);
-            }
-        }
-        return dir.resolve(model + ".io.json");
+        return TestModels.copy(model, tmp.getRoot().toPath());
     }
 
     @Test

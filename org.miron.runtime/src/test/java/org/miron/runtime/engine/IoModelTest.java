@@ -12,6 +12,7 @@ import java.util.Map;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.runtime.EngineFixture;
 
 /** io.json loading and the initial parameter values the engine feeds (docs/io-json.md). */
 public class IoModelTest {

@@ -8,6 +8,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.bus.Topics;
+import org.miron.testkit.runtime.EngineFixture;
 
 /** The skill interface starts after the engine: change-parameter is retried until acknowledged. */
 public class ParameterRetryTest {

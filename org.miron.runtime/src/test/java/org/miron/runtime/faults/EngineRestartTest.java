@@ -10,11 +10,12 @@ import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.engine.Engine;
-import org.miron.runtime.engine.EngineFixture;
 import org.miron.runtime.engine.IoModel;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.TestbotRules;
 
 /**
  * Issue 10, item 1: a (re)started engine must not publish a decision from its initial values

@@ -8,11 +8,12 @@ import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.Ports;
+import org.miron.runtime.Endpoints;
 import org.miron.runtime.engine.Engine;
-import org.miron.runtime.engine.EngineFixture;
 import org.miron.runtime.engine.EngineOptions;
 import org.miron.runtime.engine.IoModel;
+import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.TestbotRules;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -48,7 +49,7 @@ public class FirstRequestTest {
         f = new EngineFixture(tmp.getRoot().toPath());
         f.startInfrastructure();
         EngineOptions o = f.options(); // ack timeout 500 ms
-        o.request = Ports.endpoints().request();
+        o.request = Endpoints.freeLoopback().request();
         engine = new Engine(IoModel.load(f.ioJson), new TestbotRules(), o).start();
         assertTrue("first decision made", f.awaitVariant("task", "pickDeliverCharge") != null);
         // the request path comes up well after the ack timeout

@@ -9,9 +9,9 @@ import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.bus.Topics;
-import org.miron.runtime.engine.EngineFixture;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.EngineFixture;
 
 /**
  * Issue 10, item 2: a valid estimate followed by invalid ones for the same name (out of range,

@@ -10,8 +10,8 @@ import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.engine.EngineFixture;
 import org.miron.runtime.engine.EngineOptions;
+import org.miron.testkit.runtime.EngineFixture;
 
 /**
  * Issue 10, item 3: after a solver crash the engine keeps the last configuration and solves the

@@ -17,25 +17,25 @@ import org.junit.After;
 import org.junit.Before;
 import org.junit.Test;
 import org.miron.executor.NodeStatus;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
-import org.miron.runtime.Ports;
 import org.miron.runtime.broker.Broker;
 import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.testkit.RepositoryRoot;
+import org.miron.testkit.runtime.BusProbe;
 
 /**
  * The woven intralogistics tree run by the live executor over real loopback sockets: a broker, the
  * mock skill interface, and decisions published on the bus as the engine would publish them.
  */
 public class LiveExecutorTest {
-    private static final Path WOVEN = Path.of(System.getProperty("miron.root", ".."))
+    private static final Path WOVEN = RepositoryRoot.path()
             .resolve("org.miron.executor/src/test/resources/executor/intralogistics.ext.xml");
 
-    private final Endpoints endpoints = Ports.endpoints();
+    private final Endpoints endpoints = Endpoints.freeLoopback();
     private Broker broker;
     private SkillInterfaceMock skills;
     private BusClient engine;
@@ -111,7 +111,7 @@ public class LiveExecutorTest {
 
     @Test
     public void theNominalIntralogisticsMissionRunsToCompletionAgainstTheSkillInterface() throws Exception {
-        Path example = Path.of(System.getProperty("miron.root", "..")).resolve("examples/intralogistics/intralogistics.bt");
+        Path example = RepositoryRoot.path().resolve("examples/intralogistics/intralogistics.bt");
         executor = new LiveExecutor(endpoints).build(example, null);
         assertEquals(NodeStatus.SUCCESS, executor.run(Duration.ofMillis(5)));
 

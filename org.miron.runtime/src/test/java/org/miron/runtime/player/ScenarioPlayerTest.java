@@ -12,12 +12,11 @@ import java.util.List;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
-import org.miron.runtime.Ports;
 import org.miron.runtime.broker.Broker;
 import org.miron.runtime.bus.Topics;
+import org.miron.testkit.runtime.BusProbe;
 
 public class ScenarioPlayerTest {
     @Rule
@@ -33,7 +32,7 @@ public class ScenarioPlayerTest {
                 + "]");
         Scenario scenario = Scenario.load(file);
         assertEquals(List.of(0L, 100L, 300L), scenario.steps().stream().map(Scenario.Step::at).toList());
-        Endpoints ep = Ports.endpoints();
+        Endpoints ep = Endpoints.freeLoopback();
         try (Broker broker = new Broker(ep).start();
                 BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
                 ScenarioPlayer player = new ScenarioPlayer(scenario, 0.1, ep.busIn())) {

@@ -17,7 +17,6 @@ import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Connect;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
-import org.miron.runtime.Ports;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -27,7 +26,7 @@ public class SkillInterfaceMockTest {
     private static final int TIMEOUT = 10_000;
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
-    private final Endpoints ep = Ports.endpoints();
+    private final Endpoints ep = Endpoints.freeLoopback();
     private final ZContext ctx = new ZContext();
     private SkillInterfaceMock mock;
     private ZMQ.Socket req;

@@ -1,4 +1,4 @@
-package org.miron.runtime;
+package org.miron.testkit.runtime;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
@@ -6,6 +6,8 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Predicate;
+import org.miron.runtime.Connect;
+import org.miron.runtime.Json;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -13,7 +15,7 @@ import org.zeromq.ZMQ;
 /** A test subscriber on the broker's XPUB that records every message and lets tests wait for one. */
 public final class BusProbe implements AutoCloseable {
     /** A received bus message with its JSON body (null when the body is not JSON). */
-    public static final class Message { // a class, not a record: see build.gradle (test scanning)
+    public static final class Message { // a class, not a record: Gradle 4.4.1 cannot scan records
         final String topic;
         final JsonNode body;
 

@@ -21,16 +21,16 @@ import org.junit.runners.Parameterized;
  * blackboard values must be equal (a tick that fails must fail in both).
  */
 @RunWith(Parameterized.class)
-public class Btcpp4OracleTest {
+public class Btcpp4TickOracleTest {
     private final Path scenario;
 
-    public Btcpp4OracleTest(String name, Path scenario) {
+    public Btcpp4TickOracleTest(String name, Path scenario) {
         this.scenario = scenario;
     }
 
     @Parameters(name = "{0}")
     public static List<Object[]> scenarios() throws IOException {
-        Path cases = Btcpp4Oracle.resource("cases");
+        Path cases = Btcpp4TickOracle.resource("cases");
         try (Stream<Path> files = Files.list(cases)) {
             return files.filter(f -> f.toString().endsWith(".json")).sorted()
                     .map(f -> new Object[] { f.getFileName().toString().replace(".json", ""), f })
@@ -40,7 +40,7 @@ public class Btcpp4OracleTest {
 
     @Test
     public void ticksLikeBehaviorTreeCpp4() throws Exception {
-        List<TickRecord> theirs = Btcpp4Oracle.run(scenario);
+        List<TickRecord> theirs = Btcpp4TickOracle.run(scenario);
         assertFalse("the oracle produced nothing for " + scenario, theirs.isEmpty());
         List<TickRecord> ours = new OurRun(Scenario.read(scenario)).run(scenario);
         assertEquals("tick by tick, BT.CPP 4 (expected) and ours (actual), for " + scenario.getFileName()

@@ -1,22 +1,20 @@
-package org.miron.runtime.engine;
+package org.miron.testkit.runtime;
 
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
-import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.function.Predicate;
-import org.miron.runtime.BusProbe;
 import org.miron.runtime.Endpoints;
-import org.miron.runtime.Ports;
 import org.miron.runtime.broker.Broker;
 import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.bus.Topics;
+import org.miron.runtime.engine.Engine;
+import org.miron.runtime.engine.EngineOptions;
+import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
 
@@ -26,7 +24,7 @@ import org.miron.runtime.skill.SkillTable;
  */
 public final class EngineFixture implements AutoCloseable {
     public static final long TIMEOUT = 20_000;
-    public final Endpoints endpoints = Ports.endpoints();
+    public final Endpoints endpoints = Endpoints.freeLoopback();
     public final Path dir;
     public final Path ioJson;
     public final Path mzn;
@@ -40,15 +38,10 @@ public final class EngineFixture implements AutoCloseable {
         this(dir, "testbot");
     }
 
-    /** @param model a model in src/test/resources/models: testbot or portbot */
+    /** @param model one of {@link TestModels}: testbot or portbot */
     public EngineFixture(Path dir, String model) throws IOException {
         this.dir = dir;
-        for (String ext : List.of(".io.json", ".mzn", ".dzn")) {
-            try (InputStream in = EngineFixture.class.getResourceAsStream("/models/" + model + ext)) {
-                Files.copy(in, dir.resolve(model + ext), StandardCopyOption.REPLACE_EXISTING);
-            }
-        }
-        ioJson = dir.resolve(model + ".io.json");
+        ioJson = TestModels.copy(model, dir);
         mzn = dir.resolve(model + ".mzn");
     }
 

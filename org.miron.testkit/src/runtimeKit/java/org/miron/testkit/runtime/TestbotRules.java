@@ -1,11 +1,11 @@
-package org.miron.runtime.faults;
+package org.miron.testkit.runtime;
 
 import java.util.Map;
 import org.miron.runtime.engine.SolveResult;
 import org.miron.runtime.engine.SolverBackend;
 
 /**
- * The testbot model's rules in Java (models/testbot.mzn): task = dock when power_autonomy < 0.3 or
+ * The testbot model's rules in Java (models/testbot.mzn beside TestModels): task = dock when power_autonomy < 0.3 or
  * a known battery is below 5, else pickDeliverCharge; maxVelocity the highest value allowed by
  * safety (and by a known LOW space). Solves in microseconds, so the engine's first decision
  * comes out as fast as the machine allows: the races of issue 10 show up every time.

@@ -18,19 +18,21 @@ import org.junit.Before;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.Btcpp4Loader;
+import org.miron.testkit.Btcpp4Python;
 
 /**
  * The real BehaviorTree.CPP 4 library decides: our valid version-4 files load in it, and on the
  * probe trees (src/test/resources/btcpp4/probes.txt) we reject exactly what it rejects, except
  * where the probe says we are deliberately stricter.
  */
-public class BtCpp4OracleTest {
+public class Btcpp4AcceptanceTest {
     @Rule
     public TemporaryFolder folder = new TemporaryFolder();
 
     @Before
     public void oracle() {
-        BtCpp4.assumeInstalled();
+        Btcpp4Python.assumeInstalled();
     }
 
     @Test
@@ -38,14 +40,14 @@ public class BtCpp4OracleTest {
         List<File> files = BtFiles.filesIn("valid").stream()
                 .filter(f -> BtFiles.model(BtFiles.load(f)).formatVersion() == 4).collect(Collectors.toList());
         assertTrue("no version-4 valid files", files.size() >= 5);
-        for (Map.Entry<File, BtCpp4.Verdict> entry : BtCpp4.load(files).entrySet()) {
+        for (Map.Entry<File, Btcpp4Loader.Verdict> entry : Btcpp4Loader.load(files).entrySet()) {
             assertTrue(entry.getKey().getName() + ": " + entry.getValue().message, entry.getValue().loaded);
         }
     }
 
     @Test
     public void weRejectWhatTheLibraryRejectsAndAcceptWhatItLoads() throws Exception {
-        List<String> lines = Files.readAllLines(new File(BtCpp4.SCRIPT.getParentFile(), "probes.txt").toPath());
+        List<String> lines = Files.readAllLines(new File(BtFiles.RESOURCES.getParentFile(), "btcpp4/probes.txt").toPath());
         List<File> files = new ArrayList<>();
         List<Boolean> stricter = new ArrayList<>();
         for (String line : lines) {
@@ -61,12 +63,12 @@ public class BtCpp4OracleTest {
             files.add(file);
             stricter.add(strict);
         }
-        Map<File, BtCpp4.Verdict> verdicts = BtCpp4.load(files);
+        Map<File, Btcpp4Loader.Verdict> verdicts = Btcpp4Loader.load(files);
         List<String> disagreements = new ArrayList<>();
         int rejected = 0;
         for (int i = 0; i < files.size(); i++) {
             File file = files.get(i);
-            BtCpp4.Verdict verdict = verdicts.get(file);
+            Btcpp4Loader.Verdict verdict = verdicts.get(file);
             List<Issue> errors = BtFiles.validate(BtFiles.load(file)).stream()
                     .filter(issue -> issue.getSeverity() == Severity.ERROR).collect(Collectors.toList());
             String tree = Files.readAllLines(file.toPath()).get(1).trim();

@@ -1,4 +1,4 @@
-package org.miron.lsp.server;
+package org.miron.testkit.lsp;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -34,6 +34,7 @@ import org.eclipse.lsp4j.jsonrpc.Launcher;
 import org.eclipse.lsp4j.launch.LSPLauncher;
 import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
+import org.miron.lsp.server.MironLanguageServer;
 
 /**
  * A real LSP client connected to an in-process MIRoN language server over piped streams: every

@@ -1,4 +1,4 @@
-package org.miron.lsp.server;
+package org.miron.testkit;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -6,18 +6,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.stream.Stream;
 
-/** Temporary copies of the repository's examples, so tests can edit and delete files. */
-public final class Workspaces {
-    private Workspaces() {
+/** Temporary copies of the repository's examples (examples/NAME), so tests can edit and delete files. */
+public final class Examples {
+    private Examples() {
     }
 
-    public static Path root() {
-        return Path.of(System.getProperty("miron.root", "..")).toAbsolutePath().normalize();
-    }
-
-    public static Path copyOfExample(String name) throws IOException {
-        Path source = root().resolve("examples").resolve(name);
-        Path target = Files.createTempDirectory("miron-lsp-" + name);
+    /** A copy of examples/NAME in a new temporary folder. */
+    public static Path copy(String name) throws IOException {
+        Path source = RepositoryRoot.resolve("examples").resolve(name);
+        Path target = Files.createTempDirectory("miron-" + name);
         try (Stream<Path> files = Files.walk(source)) {
             files.forEach(file -> {
                 try {
@@ -35,6 +32,7 @@ public final class Workspaces {
         return target;
     }
 
+    /** Deletes a folder and everything in it. */
     public static void delete(Path dir) throws IOException {
         try (Stream<Path> files = Files.walk(dir)) {
             files.sorted((a, b) -> b.getNameCount() - a.getNameCount()).forEach(file -> file.toFile().delete());

@@ -1,24 +1,27 @@
-package org.miron.bt.tests;
+package org.miron.testkit;
 
 import java.io.BufferedReader;
 import java.io.File;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.InputStreamReader;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
-import org.junit.Assume;
-
 /**
- * The real BehaviorTree.CPP 4 as an oracle: behaviortreepy in build/btcpp4-venv (installed by
- * scripts/ensure-btcpp4.sh), driven by src/test/resources/btcpp4/load_trees.py as a process.
- * Public for the other modules' tests (the generator's woven trees).
+ * The real BehaviorTree.CPP 4 as a loading oracle: does the library accept a tree file, and if not,
+ * what does it say? Runs load_trees.py (beside this class) with {@link Btcpp4Python}. Callers first
+ * call {@link Btcpp4Python#assumeInstalled()}.
  */
-public final class BtCpp4 {
-    static final File SCRIPT = new File(BtFiles.repositoryRoot(), "org.miron.bt/src/test/resources/btcpp4/load_trees.py");
+public final class Btcpp4Loader {
+    private static Path script;
 
     /** What the library said about one file: loaded, or rejected with its message. */
     public static final class Verdict {
@@ -31,26 +34,12 @@ public final class BtCpp4 {
         }
     }
 
-    private BtCpp4() {
-    }
-
-    static File python() {
-        return new File(BtFiles.repositoryRoot(), "build/btcpp4-venv/bin/python");
-    }
-
-    /** Skips the calling test, saying why, when the oracle is not installed. */
-    public static void assumeInstalled() {
-        if (!python().canExecute()) {
-            String reason = "BehaviorTree.CPP 4 oracle not installed (" + python()
-                    + "; scripts/ensure-btcpp4.sh installs it): test skipped";
-            System.out.println(reason);
-            Assume.assumeTrue(reason, false);
-        }
+    private Btcpp4Loader() {
     }
 
     /** Loads the files in one library process; the verdicts in the order of the files. */
     public static Map<File, Verdict> load(List<File> files) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(python().getPath(), SCRIPT.getAbsolutePath()));
+        List<String> command = new ArrayList<>(List.of(Btcpp4Python.location().toString(), script().toString()));
         Map<String, File> byPath = new LinkedHashMap<>();
         for (File file : files) {
             command.add(file.getAbsolutePath());
@@ -77,5 +66,20 @@ public final class BtCpp4 {
             throw new IllegalStateException("oracle exited with " + exit + ":\n" + output);
         }
         return verdicts;
+    }
+
+    /** The script as a file python can run (the kit may be a jar on the class path). */
+    private static synchronized Path script() {
+        if (script == null) {
+            try (InputStream in = Btcpp4Loader.class.getResourceAsStream("load_trees.py")) {
+                Path file = Files.createTempFile("miron-load_trees", ".py");
+                file.toFile().deleteOnExit();
+                Files.copy(in, file, StandardCopyOption.REPLACE_EXISTING);
+                script = file;
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
+        }
+        return script;
     }
 }
