@@ -7,7 +7,6 @@ import static org.junit.Assert.assertTrue;
 import java.io.File;
 import java.io.IOException;
 import java.io.StringWriter;
-import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -37,10 +36,7 @@ public class CheckFormatTest {
     }
 
     private File write(String name, String text) throws IOException {
-        File file = new File(temp.getRoot(), name);
-        file.getParentFile().mkdirs();
-        Files.writeString(file.toPath(), text);
-        return file;
+        return Cli.write(temp.getRoot().toPath(), name, text).toFile();
     }
 
     private List<JsonNode> jsonLines() throws IOException {

@@ -1,7 +1,9 @@
 package org.miron.cli;
 
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 
 import picocli.CommandLine;
@@ -23,6 +25,14 @@ final class Cli {
 
     String out() {
         return out.toString().replace(System.lineSeparator(), "\n");
+    }
+
+    /** Writes a file (and the folders above it) below dir, for a command to read. */
+    static Path write(Path dir, String name, String text) throws IOException {
+        Path file = dir.resolve(name);
+        Files.createDirectories(file.getParent());
+        Files.writeString(file, text);
+        return file;
     }
 
     static int exit(String... args) {

@@ -31,10 +31,7 @@ public class CliTest {
     }
 
     private File write(String name, String text) throws IOException {
-        File file = new File(temp.getRoot(), name);
-        file.getParentFile().mkdirs();
-        Files.writeString(file.toPath(), text);
-        return file;
+        return Cli.write(temp.getRoot().toPath(), name, text).toFile();
     }
 
     @Test

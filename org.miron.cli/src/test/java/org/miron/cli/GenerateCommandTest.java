@@ -26,10 +26,7 @@ public class GenerateCommandTest {
     public TemporaryFolder temp = new TemporaryFolder();
 
     private Path write(String name, String text) throws IOException {
-        Path file = temp.getRoot().toPath().resolve(name);
-        Files.createDirectories(file.getParent());
-        Files.writeString(file, text);
-        return file;
+        return Cli.write(temp.getRoot().toPath(), name, text);
     }
 
     private void copyIntralogistics() throws IOException {

@@ -13,6 +13,7 @@ import java.util.concurrent.TimeUnit;
 import org.eclipse.lsp4j.DiagnosticSeverity;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 import picocli.CommandLine;
@@ -49,7 +50,7 @@ public class LspCommandTest {
             assertEquals(0, process.exitValue());
         } finally {
             process.destroyForcibly();
-            Examples.delete(workspace);
+            Folders.delete(workspace);
         }
     }
 

@@ -15,6 +15,7 @@ import java.util.stream.Stream;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.JsonSchemaFile;
 
 /**
  * Every example generates, its woven tree passes our BT validation, its io.json follows
@@ -48,7 +49,7 @@ public class ExamplesGenerationTest {
             }
             Toolchain check = new Toolchain();
             assertEquals(model + ": " + check.messages(), 0, check.check(out.resolve(base(model) + ".ext.xml").toString()));
-            IoJsonSchema.assertValid(out.resolve(base(model) + ".io.json"));
+            JsonSchemaFile.IO_JSON.assertValid(out.resolve(base(model) + ".io.json"));
             MiniZinc mzn = new MiniZinc(out.resolve(base(model) + ".io.json"));
             Map<String, Integer> decisions = mzn.solve(mzn.defaults());
             assertEquals(model + ": one decision per varpoint", mzn.io.get("varpoints").size(), decisions.size());

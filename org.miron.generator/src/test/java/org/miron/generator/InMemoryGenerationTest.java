@@ -19,6 +19,7 @@ import org.eclipse.xtext.resource.XtextResourceSet;
 import org.eclipse.xtext.util.StringInputStream;
 import org.junit.Test;
 import org.miron.dsl.MironStandaloneSetup;
+import org.miron.testkit.JsonSchemaFile;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -108,7 +109,7 @@ public class InMemoryGenerationTest {
         assertTrue(file(fsa, "model.mzn").toString().contains("v_var"));
         JsonNode io = new ObjectMapper().readTree(file(fsa, "model.io.json").toString());
         assertEquals("model.ext.xml", io.get("tree").asText());
-        assertEquals(List.of(), IoJsonSchema.problems(io));
+        assertEquals(List.of(), JsonSchemaFile.IO_JSON.problems(io));
         return include(file(fsa, "model.ext.xml"));
     }
 

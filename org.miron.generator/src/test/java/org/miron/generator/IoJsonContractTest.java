@@ -12,6 +12,7 @@ import java.util.List;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.JsonSchemaFile;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -41,7 +42,7 @@ public class IoJsonContractTest {
 
     @Test
     public void generatedFileIsValid() throws IOException {
-        assertEquals(List.of(), IoJsonSchema.problems(generateIntralogistics()));
+        assertEquals(List.of(), JsonSchemaFile.IO_JSON.problems(generateIntralogistics()));
     }
 
     @Test
@@ -50,7 +51,7 @@ public class IoJsonContractTest {
         int start = doc.indexOf("```json\n") + "```json\n".length();
         assertTrue("docs/io-json.md has a ```json example", start > "```json\n".length() - 1);
         String example = doc.substring(start, doc.indexOf("```", start));
-        assertEquals(List.of(), IoJsonSchema.problems(example));
+        assertEquals(List.of(), JsonSchemaFile.IO_JSON.problems(example));
     }
 
     @Test
@@ -84,7 +85,7 @@ public class IoJsonContractTest {
         for (int i = 0; i < breakages.size(); i++) {
             ObjectNode broken = good.deepCopy();
             breakages.get(i).accept(broken);
-            assertFalse("breakage " + i + " passed the schema", IoJsonSchema.problems(broken).isEmpty());
+            assertFalse("breakage " + i + " passed the schema", JsonSchemaFile.IO_JSON.problems(broken).isEmpty());
         }
     }
 
@@ -102,7 +103,7 @@ public class IoJsonContractTest {
         Toolchain toolchain = new Toolchain();
         assertEquals(toolchain.messages(), 0, toolchain.generate(model.toString(), out.toString()));
         JsonNode io = MAPPER.readTree(out.resolve("odd.io.json").toFile());
-        assertEquals(List.of(), IoJsonSchema.problems(io));
+        assertEquals(List.of(), JsonSchemaFile.IO_JSON.problems(io));
         assertEquals("Cd\"Parameter\" – \\ x", io.get("varpoints").get(0).get("binding").get("parameterSet").asText());
     }
 }

@@ -13,6 +13,7 @@ import java.util.List;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.miron.testkit.JsonSchemaFile;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -37,7 +38,7 @@ public class RoqmeRuntimeModelTest {
         Toolchain toolchain = new Toolchain();
         assertEquals(model + ": " + toolchain.messages(), 0, toolchain.generate(model.toString(), out.toString()));
         String base = model.getFileName().toString().replaceFirst("\\.(roqme|miron)$", "");
-        return RoqmeModelSchema.read(out.resolve(base + ".roqme.json"));
+        return JsonSchemaFile.ROQME_MODEL.assertValid(out.resolve(base + ".roqme.json"));
     }
 
     /** JSON written with single quotes, for readable expectations. */
@@ -191,7 +192,7 @@ public class RoqmeRuntimeModelTest {
         for (int i = 0; i < breakages.size(); i++) {
             com.fasterxml.jackson.databind.node.ObjectNode broken = (com.fasterxml.jackson.databind.node.ObjectNode) model.deepCopy();
             breakages.get(i).accept(broken);
-            assertFalse("breakage " + i + " passes the schema", RoqmeModelSchema.problems(broken).isEmpty());
+            assertFalse("breakage " + i + " passes the schema", JsonSchemaFile.ROQME_MODEL.problems(broken).isEmpty());
         }
     }
 
@@ -202,7 +203,7 @@ public class RoqmeRuntimeModelTest {
         assertEquals(toolchain.messages(), 0,
                 toolchain.generate(INTRALOGISTICS.resolve("intralogistics.miron").toString(), out.toString()));
         assertTrue(Files.isRegularFile(out.resolve("intralogistics.io.json")));
-        JsonNode fromMiron = RoqmeModelSchema.read(out.resolve("intralogistics.roqme.json"));
+        JsonNode fromMiron = JsonSchemaFile.ROQME_MODEL.assertValid(out.resolve("intralogistics.roqme.json"));
         JsonNode fromRoqme = generate(INTRALOGISTICS.resolve("intralogistics.roqme"));
         assertEquals("intralogistics.miron", fromMiron.get("source").asText());
         for (String kind : List.of("contexts", "params", "vars", "timers", "beliefs", "observations")) {

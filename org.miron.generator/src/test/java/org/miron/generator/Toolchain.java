@@ -1,18 +1,15 @@
 package org.miron.generator;
 
 import java.io.File;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.generator.standalone.BatchGeneration;
 import org.miron.generator.standalone.Diagnostic;
 import org.miron.generator.standalone.ModelLoader;
+import org.miron.testkit.Folders;
 import org.miron.testkit.RepositoryRoot;
 
 /**
@@ -67,19 +64,6 @@ final class Toolchain {
 
     /** Copies a folder of test resources (src/test/resources/NAME) to dir. */
     static Path copyResources(String name, Path dir) {
-        Path from = ROOT.resolve("org.miron.generator/src/test/resources").resolve(name);
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path file : (Iterable<Path>) files::iterator) {
-                Path to = dir.resolve(from.relativize(file).toString());
-                if (Files.isDirectory(file)) {
-                    Files.createDirectories(to);
-                } else {
-                    Files.copy(file, to);
-                }
-            }
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-        return dir;
+        return Folders.copy(ROOT.resolve("org.miron.generator/src/test/resources").resolve(name), dir);
     }
 }

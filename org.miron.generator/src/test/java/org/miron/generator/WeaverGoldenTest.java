@@ -14,6 +14,7 @@ import org.junit.rules.TemporaryFolder;
 import org.junit.runner.RunWith;
 import org.junit.runners.Parameterized;
 import org.junit.runners.Parameterized.Parameters;
+import org.miron.testkit.JsonSchemaFile;
 
 /**
  * Golden files of the weaver, one per insertion case (src/test/resources/weaving): each
@@ -80,7 +81,7 @@ public class WeaverGoldenTest {
     public void ioJsonFollowsTheSchema() throws IOException {
         Toolchain toolchain = new Toolchain();
         assertEquals(toolchain.messages(), 0, toolchain.generate(models.resolve(name + ".miron").toString(), out.toString()));
-        IoJsonSchema.assertValid(out.resolve(name + ".io.json"));
+        JsonSchemaFile.IO_JSON.assertValid(out.resolve(name + ".io.json"));
     }
 
     @Test

@@ -18,6 +18,7 @@ import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** Completion in the three languages, on unsaved buffers of the intralogistics example. */
@@ -35,7 +36,7 @@ public class CompletionLspTest {
     @AfterClass
     public static void tearDown() throws Exception {
         client.close();
-        Examples.delete(workspace);
+        Folders.delete(workspace);
     }
 
     /** Labels proposed when the buffer of a file is `text`, the caret just after `after`. */

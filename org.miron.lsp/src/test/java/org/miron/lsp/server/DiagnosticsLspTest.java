@@ -21,6 +21,7 @@ import org.junit.Test;
 import org.miron.generator.standalone.Diagnostic.Severity;
 import org.miron.generator.standalone.ModelLoader;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** The server's diagnostics are `miron check`'s, and follow the files on disk. */
@@ -130,7 +131,7 @@ public class DiagnosticsLspTest {
                 assertFalse(file + ": " + other.published(uri), IntralogisticsLspTest.hasErrors(other.published(uri)));
             }
         } finally {
-            Examples.delete(hospital);
+            Folders.delete(hospital);
         }
     }
 

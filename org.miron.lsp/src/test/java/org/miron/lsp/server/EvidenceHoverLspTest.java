@@ -13,6 +13,7 @@ import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /**
@@ -41,7 +42,7 @@ public class EvidenceHoverLspTest {
     @AfterClass
     public static void tearDown() throws Exception {
         client.close();
-        Examples.delete(workspace);
+        Folders.delete(workspace);
     }
 
     private static String hover(String after) throws Exception {

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 
 import org.junit.rules.ExternalResource;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /**
@@ -30,7 +31,7 @@ public final class ExampleSession extends ExternalResource {
     protected void after() {
         try {
             client.close();
-            Examples.delete(workspace);
+            Folders.delete(workspace);
         } catch (Exception e) {
             throw new IllegalStateException("cannot tear down the LSP session on " + workspace, e);
         }

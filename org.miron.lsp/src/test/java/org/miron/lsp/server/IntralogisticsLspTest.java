@@ -27,6 +27,7 @@ import org.junit.After;
 import org.junit.Before;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** The intralogistics example through a real LSP client: the scenarios of the language-server issue. */
@@ -50,7 +51,7 @@ public class IntralogisticsLspTest {
     @After
     public void tearDown() throws Exception {
         client.close();
-        Examples.delete(workspace);
+        Folders.delete(workspace);
     }
 
     static boolean hasErrors(List<Diagnostic> diagnostics) {

@@ -11,6 +11,7 @@ import java.util.concurrent.TimeUnit;
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /**
@@ -93,7 +94,7 @@ public final class LspBenchmark {
             print(example + ": completion after 'affects '", completion);
             client.close();
         } finally {
-            Examples.delete(workspace);
+            Folders.delete(workspace);
         }
     }
 

@@ -29,6 +29,7 @@ import org.junit.AfterClass;
 import org.junit.BeforeClass;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** Hover, references, rename, outline and folding across the intralogistics files. */
@@ -51,7 +52,7 @@ public class NavigationLspTest {
     @AfterClass
     public static void tearDown() throws Exception {
         client.close();
-        Examples.delete(workspace);
+        Folders.delete(workspace);
     }
 
     private static String hover(String uri, String text, String after) throws Exception {

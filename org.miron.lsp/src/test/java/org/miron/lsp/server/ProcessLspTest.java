@@ -13,6 +13,7 @@ import java.util.concurrent.TimeUnit;
 import org.eclipse.lsp4j.InitializeResult;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** The language server as an editor starts it: a child process speaking LSP on stdio. */
@@ -46,7 +47,7 @@ public class ProcessLspTest {
             assertEquals(0, process.exitValue());
         } finally {
             process.destroyForcibly();
-            Examples.delete(workspace);
+            Folders.delete(workspace);
         }
     }
 }

@@ -20,6 +20,7 @@ import org.eclipse.lsp4j.TextDocumentIdentifier;
 import org.junit.Rule;
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** Bad input never kills the server: every request still gets an answer afterwards. */
@@ -124,7 +125,7 @@ public class RobustnessLspTest {
             assertTrue(String.valueOf(fresh.published(pom)), fresh.published(pom) == null || fresh.published(pom).isEmpty());
             assertAlive();
         } finally {
-            Examples.delete(other);
+            Folders.delete(other);
         }
     }
 
@@ -148,7 +149,7 @@ public class RobustnessLspTest {
             assertTrue(String.valueOf(fresh.published(child)), fresh.published(child).isEmpty());
             assertAlive();
         } finally {
-            Examples.delete(other);
+            Folders.delete(other);
         }
     }
 

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 
 import org.junit.Test;
 import org.miron.testkit.Examples;
+import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /** `--socket PORT`: the server listens on the loopback interface and serves a client that connects. */
@@ -34,7 +35,7 @@ public class SocketLspTest {
                 client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
             }
         } finally {
-            Examples.delete(workspace);
+            Folders.delete(workspace);
         }
     }
 }

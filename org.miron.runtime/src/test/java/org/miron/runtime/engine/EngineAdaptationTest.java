@@ -8,33 +8,28 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.nio.file.Files;
 import java.util.List;
 import java.util.Optional;
-import org.junit.After;
 import org.junit.Before;
 import org.junit.Rule;
 import org.junit.Test;
-import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.skill.ParameterChange;
 import org.miron.testkit.runtime.BusProbe;
 import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.EngineFixtures;
 
 /** End to end over real sockets and the real minizinc: inputs in, adaptations out. */
 public class EngineAdaptationTest {
     @Rule
-    public TemporaryFolder tmp = new TemporaryFolder();
+    public final EngineFixtures fixtures = new EngineFixtures();
     private EngineFixture f;
 
     @Before
     public void setUp() throws Exception {
-        f = new EngineFixture(tmp.getRoot().toPath());
+        f = fixtures.create();
         f.startAll();
     }
 
-    @After
-    public void tearDown() {
-        f.close();
-    }
 
     @Test
     public void batteryDropSwitchesTaskToDock() throws Exception {

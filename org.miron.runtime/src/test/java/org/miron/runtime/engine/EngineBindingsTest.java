@@ -5,30 +5,25 @@ import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import org.junit.After;
 import org.junit.Before;
 import org.junit.Rule;
 import org.junit.Test;
-import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.bus.Topics;
 import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.EngineFixtures;
 
 /** btport and decision-only bindings, numeric overrides, empty namespace (portbot model). */
 public class EngineBindingsTest {
     @Rule
-    public TemporaryFolder tmp = new TemporaryFolder();
+    public final EngineFixtures fixtures = new EngineFixtures();
     private EngineFixture f;
 
     @Before
     public void setUp() throws Exception {
-        f = new EngineFixture(tmp.getRoot().toPath(), "portbot");
+        f = fixtures.create("portbot");
         f.startInfrastructure().startEngine(f.options());
     }
 
-    @After
-    public void tearDown() {
-        f.close();
-    }
 
     private JsonNode awaitSpeed(double value) throws InterruptedException {
         return f.probe.await(Topics.BLACKBOARD_PREFIX + "speed", b -> b.path("value").asDouble() == value,

@@ -10,14 +10,13 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import org.junit.After;
 import org.junit.Before;
 import org.junit.Rule;
 import org.junit.Test;
-import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.bus.Topics;
 import org.miron.testkit.runtime.BusProbe;
 import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.EngineFixtures;
 
 /**
  * Injected failures: the engine keeps the last good configuration, reports on miron.status,
@@ -31,20 +30,16 @@ public class EngineFailureTest {
     static final String SYNTAX = "\nconstraint this is not minizinc;\n";
 
     @Rule
-    public TemporaryFolder tmp = new TemporaryFolder();
+    public final EngineFixtures fixtures = new EngineFixtures();
     private EngineFixture f;
     private String goodModel;
 
     @Before
     public void setUp() throws Exception {
-        f = new EngineFixture(tmp.getRoot().toPath());
+        f = fixtures.create();
         goodModel = Files.readString(f.mzn);
     }
 
-    @After
-    public void tearDown() {
-        f.close();
-    }
 
     private EngineOptions shortLimit() {
         EngineOptions o = f.options();
@@ -56,7 +51,7 @@ public class EngineFailureTest {
     public void missingMinizincIsAClearStartupError() throws Exception {
         f.startInfrastructure();
         EngineOptions o = f.options();
-        o.minizinc = tmp.getRoot() + "/no/such/minizinc";
+        o.minizinc = f.dir + "/no/such/minizinc";
         try {
             Engine.create(o).start();
             fail("engine started without minizinc");

@@ -8,24 +8,18 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import com.networknt.schema.Schema;
-import com.networknt.schema.SchemaRegistry;
-import com.networknt.schema.SpecificationVersion;
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
-import org.junit.BeforeClass;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.testkit.RepositoryRoot;
+import org.miron.testkit.JsonSchemaFile;
 import org.miron.testkit.runtime.TestModels;
 
 /**
@@ -34,22 +28,13 @@ import org.miron.testkit.runtime.TestModels;
  * ways the engine cannot use are refused when loading.
  */
 public class IoContractTest {
-    private static final Path ROOT = RepositoryRoot.path();
     private static final ObjectMapper MAPPER = new ObjectMapper();
-    private static Schema schema;
 
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
 
-    @BeforeClass
-    public static void loadSchema() throws IOException {
-        try (InputStream in = Files.newInputStream(ROOT.resolve("docs/io-json.schema.json"))) {
-            schema = SchemaRegistry.withDefaultDialect(SpecificationVersion.DRAFT_2020_12).getSchema(in);
-        }
-    }
-
     private static List<String> problems(JsonNode json) {
-        return schema.validate(json).stream().map(Object::toString).toList();
+        return JsonSchemaFile.IO_JSON.problems(json);
     }
 
     /** The model's .io.json, .mzn and .dzn copied to the temporary folder; returns the io.json. */

@@ -3,27 +3,21 @@ package org.miron.runtime.engine;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
-import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
-import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.bus.Topics;
 import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.EngineFixtures;
 
 /** The skill interface starts after the engine: change-parameter is retried until acknowledged. */
 public class ParameterRetryTest {
     @Rule
-    public TemporaryFolder tmp = new TemporaryFolder();
+    public final EngineFixtures fixtures = new EngineFixtures();
     private EngineFixture f;
-
-    @After
-    public void tearDown() {
-        f.close();
-    }
 
     @Test
     public void unacknowledgedChangesAreRetriedWithoutBlockingTheEngine() throws Exception {
-        f = new EngineFixture(tmp.getRoot().toPath());
+        f = fixtures.create();
         f.startInfrastructure().startEngine(f.options());
         assertNotNull("variants flow while the skill interface is down", f.awaitVariant("task", "pickDeliverCharge"));
         assertNotNull("missing acks are reported", f.awaitStatus(s -> s.path("counters").path("paramRetries").asLong() >= 2

@@ -5,13 +5,12 @@ import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
-import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.bus.Topics;
 import org.miron.testkit.runtime.BusProbe;
 import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.EngineFixtures;
 
 /**
  * Issue 10, item 2: a valid estimate followed by invalid ones for the same name (out of range,
@@ -25,17 +24,12 @@ public class PoisonedCacheTest {
         "{\"name\":\"power_autonomy\",\"namespace\":\"Intralogistics\",\"value\":0.9}xyz",
     };
     @Rule
-    public TemporaryFolder tmp = new TemporaryFolder();
+    public final EngineFixtures fixtures = new EngineFixtures();
     private EngineFixture f;
-
-    @After
-    public void tearDown() {
-        f.close();
-    }
 
     @Test
     public void invalidEstimatesNeverReplaceTheCachedValidOne() throws Exception {
-        f = new EngineFixture(tmp.getRoot().toPath());
+        f = fixtures.create();
         f.startInfrastructure().startSkills();
         f.estimate("power_autonomy", 0.2);
         for (String bad : BAD_ESTIMATES) {

@@ -6,12 +6,11 @@ import static org.junit.Assert.assertTrue;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import org.junit.After;
 import org.junit.Rule;
 import org.junit.Test;
-import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.engine.EngineOptions;
 import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.EngineFixtures;
 
 /**
  * Issue 10, item 3: after a solver crash the engine keeps the last configuration and solves the
@@ -19,17 +18,12 @@ import org.miron.testkit.runtime.EngineFixture;
  */
 public class SolverRetryTest {
     @Rule
-    public TemporaryFolder tmp = new TemporaryFolder();
+    public final EngineFixtures fixtures = new EngineFixtures();
     private EngineFixture f;
-
-    @After
-    public void tearDown() {
-        f.close();
-    }
 
     @Test
     public void aCrashedSolveIsRetriedOnUnchangedInputsUntilItSucceeds() throws Exception {
-        f = new EngineFixture(tmp.getRoot().toPath());
+        f = fixtures.create();
         // minizinc that crashes while the file "crash" exists
         Path wrapper = f.dir.resolve("minizinc-wrapper.sh");
         Files.writeString(wrapper, "#!/bin/sh\nif [ -e \"$(dirname \"$0\")/crash\" ]; then kill -SEGV $$; fi\n"
