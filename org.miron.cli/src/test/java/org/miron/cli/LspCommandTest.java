@@ -44,8 +44,7 @@ public class LspCommandTest {
             client.initialize(workspace);
             String uri = client.open(workspace.resolve("intralogistics.miron"));
             client.awaitDiagnostics(uri, d -> d.stream().noneMatch(x -> x.getSeverity() == DiagnosticSeverity.Error));
-            client.server().shutdown().get(60, TimeUnit.SECONDS);
-            client.server().exit();
+            client.close(); // shutdown, exit, end of input: as an editor ends the session
             assertTrue("miron lsp did not exit", process.waitFor(60, TimeUnit.SECONDS));
             assertEquals(0, process.exitValue());
         } finally {

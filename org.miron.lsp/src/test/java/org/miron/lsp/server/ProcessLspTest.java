@@ -41,8 +41,7 @@ public class ProcessLspTest {
             assertTrue(result.getCapabilities().getExecuteCommandProvider().getCommands().contains("miron.convert"));
             String uri = client.open(workspace.resolve("intralogistics.miron"));
             client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
-            client.server().shutdown().get(60, TimeUnit.SECONDS);
-            client.server().exit();
+            client.close(); // shutdown, exit, end of input: as an editor ends the session
             assertTrue("the server did not exit", process.waitFor(60, TimeUnit.SECONDS));
             assertEquals(0, process.exitValue());
         } finally {
