@@ -34,7 +34,11 @@ public final class RepositoryRoot {
     }
 
     private static Path find() {
-        String property = System.getProperty("miron.root");
+        return find(System.getProperty("miron.root"), Path.of("").toAbsolutePath().normalize());
+    }
+
+    /** The root given the property (or null) and the folder to start walking up from. */
+    static Path find(String property, Path start) {
         if (property != null) {
             Path given = Path.of(property).toAbsolutePath().normalize();
             if (!Files.isRegularFile(given.resolve("settings.gradle"))) {
@@ -42,7 +46,6 @@ public final class RepositoryRoot {
             }
             return given;
         }
-        Path start = Path.of("").toAbsolutePath().normalize();
         for (Path dir = start; dir != null; dir = dir.getParent()) {
             if (Files.isRegularFile(dir.resolve("settings.gradle"))) {
                 return dir;
