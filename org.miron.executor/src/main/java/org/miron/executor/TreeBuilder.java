@@ -153,8 +153,8 @@ public final class TreeBuilder {
         String tag = node.getTag();
         NodeModel model = BuiltinFactories.builtin(tag, version())
                 .or(() -> NodeCatalogue.find(tag).filter(NodeModel::explicitForm)).orElse(null);
-        if (model != null && model.kind() == NodeKind.SUBTREE) {
-            return subtree((SubtreeNode) node, model, info, blackboard, stack);
+        if (model != null && model.kind() == NodeKind.SUBTREE && node instanceof SubtreeNode subtree) {
+            return subtree(subtree, model, info, blackboard, stack);
         }
         List<Node> children = new ArrayList<>();
         for (TreeNode child : BtTrees.children(node)) {
