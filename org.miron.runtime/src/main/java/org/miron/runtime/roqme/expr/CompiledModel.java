@@ -1,0 +1,33 @@
+package org.miron.runtime.roqme.expr;
+
+import java.util.List;
+import java.util.Map;
+import org.miron.runtime.roqme.model.RoqmeModel;
+
+/**
+ * A runtime model ready to run: slots, the computed slots in dependency order, the compiled
+ * observations and the beliefs' reasoner parameters.
+ */
+public record CompiledModel(RoqmeModel model, int slots, Map<String, Symbol> symbols, List<Computed> computed,
+        List<Window> windows, List<CompiledObservation> observations, List<CompiledBelief> beliefs,
+        Map<Integer, Object> initialValues) {
+
+    /** A derived context or var ({@code expr}), or a window ({@code window}); {@code deps} are the slots it reads. */
+    public record Computed(int slot, ValueNode expr, Window window, int[] deps) {
+    }
+
+    public record CompiledObservation(int index, String id, RoqmeModel.Observation decl, EventNode pattern, int[] deps,
+            List<CompiledAction> actions) {
+    }
+
+    /**
+     * {@code kind}: reinforces/undermines ({@code ratio} r, {@code survivalMs} resolved), clears,
+     * sets ({@code target} var slot, {@code value}), starts/stops/resumes ({@code target} timer index).
+     */
+    public record CompiledAction(String kind, int target, double ratio, long survivalMs, ValueNode value) {
+    }
+
+    /** A property or beliefvar; {@code expr} for a property defined by an expression of other beliefs. */
+    public record CompiledBelief(int index, int slot, RoqmeModel.Belief decl, ValueNode expr) {
+    }
+}
