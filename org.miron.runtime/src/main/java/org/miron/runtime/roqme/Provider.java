@@ -31,6 +31,11 @@ public final class Provider {
     public record Tick(long k, long timeMs, double[] estimates, List<String> fired) {
     }
 
+    /** Told of every firing at the time it happens (the live service publishes it at once). */
+    public interface FireListener {
+        void fired(CompiledObservation o, long time);
+    }
+
     private record Due(long time, long seq, int kind, int index, int generation) {
     }
 
@@ -59,6 +64,7 @@ public final class Provider {
     private long tick;
     private long samples;
     private long firings;
+    private FireListener listener = (o, t) -> { };
 
     public Provider(CompiledModel model, long periodMs, long startMs) {
         if (periodMs <= 0) {
@@ -151,6 +157,11 @@ public final class Provider {
         return firings;
     }
 
+    public Provider onFire(FireListener l) {
+        this.listener = l;
+        return this;
+    }
+
     /** Sets params, computes vars and derived contexts, arms the timers that are not paused. */
     public Provider start() {
         store.newStep(startMs);
@@ -162,6 +173,9 @@ public final class Provider {
         for (CompiledBelief b : model.beliefs()) {
             store.set(b.slot(), b.decl().ref());
             updated(b.slot());
+        }
+        for (Window w : windows) {
+            w.init(store);
         }
         pendingComputed.set(0, computed.length);
         pendingObservations.set(0, model.observations().size());
@@ -327,6 +341,7 @@ public final class Provider {
             }
             firings++;
             firedThisTick.set(i);
+            listener.fired(o, store.now());
             for (CompiledAction a : o.actions()) {
                 switch (a.kind()) {
                     case "sets" -> {

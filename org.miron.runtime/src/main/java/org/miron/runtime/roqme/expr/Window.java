@@ -88,6 +88,11 @@ public final class Window {
         s.set(slot, value());
     }
 
+    /** Sets the slot to the empty window's value (count and sum 0, the others unknown). */
+    public void init(Store s) {
+        s.values[slot] = value();
+    }
+
     /** Drops samples that left a time window at {@code now}; updates the slot when any did. */
     public boolean expire(Store s) {
         if (trim(s.now())) {
