@@ -70,6 +70,7 @@ public final class Provider {
         if (periodMs <= 0) {
             throw new IllegalArgumentException("the period must be positive, got " + periodMs);
         }
+        model = model.claim();
         this.model = model;
         this.periodMs = periodMs;
         this.startMs = startMs;

@@ -5,12 +5,29 @@ import java.util.Map;
 import org.miron.runtime.roqme.model.RoqmeModel;
 
 /**
- * A runtime model ready to run: slots, the computed slots in dependency order, the compiled
+ * A runtime model ready to run (for one provider: see {@link #claim}): slots, the computed slots in dependency order, the compiled
  * observations and the beliefs' reasoner parameters.
  */
 public record CompiledModel(RoqmeModel model, int slots, Map<String, Symbol> symbols, List<Computed> computed,
         List<Window> windows, List<CompiledObservation> observations, List<CompiledBelief> beliefs,
-        Map<Integer, Object> initialValues) {
+        Map<Integer, Object> initialValues, Map<String, String> params, java.util.concurrent.atomic.AtomicBoolean claimed) {
+
+    /**
+     * Patterns and windows keep state, so a compiled model serves one provider: the first caller gets
+     * this one, any later caller (a restarted provider, a second replay) a fresh compilation.
+     */
+    public CompiledModel claim() {
+        if (claimed.compareAndSet(false, true)) {
+            return this;
+        }
+        try {
+            CompiledModel m = Compiler.compile(model, new java.util.HashMap<>(params));
+            m.claimed.set(true);
+            return m;
+        } catch (org.miron.runtime.roqme.model.ModelException e) {
+            throw new IllegalStateException("compiled once, refused now: " + e.getMessage(), e);
+        }
+    }
 
     /** A derived context or var ({@code expr}), or a window ({@code window}); {@code deps} are the slots it reads. */
     public record Computed(int slot, ValueNode expr, Window window, int[] deps) {

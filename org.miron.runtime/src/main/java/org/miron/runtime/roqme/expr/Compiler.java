@@ -43,6 +43,7 @@ public final class Compiler {
     }
 
     private CompiledModel run(Map<String, String> params) throws ModelException {
+        Map<String, String> asGiven = Map.copyOf(params);
         declare(model.contexts(), Kind.CONTEXT);
         declare(model.params(), Kind.PARAM);
         declare(model.vars(), Kind.VAR);
@@ -77,6 +78,9 @@ public final class Compiler {
             String given = params.containsKey(v.id()) ? params.remove(v.id()) : params.remove(v.name());
             Object value = given != null ? Literals.parse(given, v.type(), v.id())
                     : v.defaultValue() == null || v.defaultValue().isNull() ? null : Literals.of(v.defaultValue());
+            if (given == null && value == null) {
+                throw error("roqme-param", "param " + v.id() + " has no default: give it with --param " + v.name() + "=VALUE");
+            }
             if (given != null && value == null) {
                 throw error("roqme-param", "--param " + v.id() + "=" + given + " is not a " + Literals.describe(v.type()));
             }
@@ -125,7 +129,7 @@ public final class Compiler {
             observations.add(new CompiledObservation(observations.size(), o.id(), o, p, ints(deps), actions));
         }
         return new CompiledModel(model, slots, Map.copyOf(symbols), order(), List.copyOf(windows), observations,
-                beliefs, initial);
+                beliefs, initial, asGiven, new java.util.concurrent.atomic.AtomicBoolean());
     }
 
     private void declare(List<Variable> vars, Kind kind) throws ModelException {
