@@ -85,7 +85,7 @@ public class RoqmeCommandTest {
     @Test
     public void invalidTraceLinesAreErrorsWithTheirLineNumber() throws Exception {
         String[][] cases = {
-            {"{\"name\":\"Near\",\"type\":\"event\",\"value\":true,\"time\":1}\n\n{oops\n", ":3: error [trace]: not a JSON object"},
+            {"{\"name\":\"Near\",\"type\":\"event\",\"value\":true,\"time\":1}\n\n{oops\n", ":3: error [trace]: not JSON: Unexpected character ('o' (code 111)): was expecting double-quote to start field name"},
             {"{\"name\":\"Near\",\"type\":\"event\",\"value\":true}\n", ":1: error [trace]: the record has no time (ms)"},
             {"{\"name\":\"Far\",\"type\":\"event\",\"value\":true,\"time\":1}\n", ":1: error [trace]: unknown context Far"},
             {"{\"name\":\"Near\",\"value\":true,\"time\":10}\n{\"name\":\"Near\",\"value\":true,\"time\":5}\n",

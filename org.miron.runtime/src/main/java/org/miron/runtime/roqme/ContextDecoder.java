@@ -1,5 +1,7 @@
 package org.miron.runtime.roqme;
 
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonToken;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.HashMap;
 import java.util.List;
@@ -45,29 +47,88 @@ public final class ContextDecoder {
         }
     }
 
+    /** Decodes a body; a streaming read (no tree): the replay decodes a trace line by line with it. */
     public Sample decode(byte[] body) throws BadContext {
-        JsonNode n;
-        try {
-            n = Json.MAPPER.readTree(body);
+        try (JsonParser p = Json.MAPPER.getFactory().createParser(body)) {
+            return decode(p);
         } catch (java.io.IOException e) {
             throw new BadContext(Problem.MALFORMED, "not JSON: " + firstLine(e.getMessage()));
         }
-        return decode(n);
+    }
+
+    public Sample decode(String body) throws BadContext {
+        try (JsonParser p = Json.MAPPER.getFactory().createParser(body)) {
+            return decode(p);
+        } catch (java.io.IOException e) {
+            throw new BadContext(Problem.MALFORMED, "not JSON: " + firstLine(e.getMessage()));
+        }
+    }
+
+    private Sample decode(JsonParser p) throws java.io.IOException, BadContext {
+        if (p.nextToken() != JsonToken.START_OBJECT) {
+            throw new BadContext(Problem.MALFORMED, "a context must be a JSON object");
+        }
+        String name = null;
+        String ns = "";
+        String type = "";
+        JsonNode value = null;
+        Long time = null;
+        boolean timeBad = false;
+        String field;
+        while ((field = p.nextFieldName()) != null) {
+            JsonToken t = p.nextToken();
+            switch (field) {
+                case "name" -> name = t == JsonToken.VALUE_STRING ? p.getText() : null;
+                case "namespace" -> ns = t == JsonToken.VALUE_STRING ? p.getText() : "";
+                case "type" -> type = t == JsonToken.VALUE_STRING ? p.getText() : "";
+                case "value" -> value = t.isScalarValue() ? scalar(p, t) : p.readValueAsTree();
+                case "time" -> {
+                    if (t.isNumeric()) {
+                        time = p.getValueAsLong();
+                    } else {
+                        timeBad = true;
+                    }
+                }
+                default -> p.skipChildren();
+            }
+        }
+        if (p.nextToken() != null) {
+            throw new BadContext(Problem.MALFORMED, "not JSON: trailing tokens after the object");
+        }
+        if (timeBad) {
+            throw new BadContext(Problem.MALFORMED, "time must be a number of ms");
+        }
+        return decode(name, ns, type, value, time);
+    }
+
+    private static JsonNode scalar(JsonParser p, JsonToken t) throws java.io.IOException {
+        var f = Json.MAPPER.getNodeFactory();
+        return switch (t) {
+            case VALUE_NUMBER_INT -> f.numberNode(p.getLongValue());
+            case VALUE_NUMBER_FLOAT -> f.numberNode(p.getDoubleValue());
+            case VALUE_STRING -> f.textNode(p.getText());
+            case VALUE_TRUE -> f.booleanNode(true);
+            case VALUE_FALSE -> f.booleanNode(false);
+            default -> f.nullNode();
+        };
     }
 
     public Sample decode(JsonNode n) throws BadContext {
-        if (n == null || !n.isObject() || !n.path("name").isTextual() || !n.has("value")) {
-            throw new BadContext(Problem.MALFORMED, "a context needs an object with a textual name and a value");
+        if (n == null || !n.isObject()) {
+            throw new BadContext(Problem.MALFORMED, "a context must be a JSON object");
         }
-        Long time = null;
-        if (n.has("time")) {
-            if (!n.get("time").isNumber()) {
-                throw new BadContext(Problem.MALFORMED, "time must be a number of ms");
-            }
-            time = n.get("time").asLong();
+        if (n.has("time") && !n.get("time").isNumber()) {
+            throw new BadContext(Problem.MALFORMED, "time must be a number of ms");
         }
-        String name = n.get("name").asText();
-        String ns = n.path("namespace").isTextual() ? n.get("namespace").asText() : "";
+        return decode(n.path("name").isTextual() ? n.get("name").asText() : null,
+                n.path("namespace").isTextual() ? n.get("namespace").asText() : "", n.path("type").asText(""),
+                n.get("value"), n.has("time") ? n.get("time").asLong() : null);
+    }
+
+    private Sample decode(String name, String ns, String type, JsonNode value, Long time) throws BadContext {
+        if (name == null || value == null) {
+            throw new BadContext(Problem.MALFORMED, "a context needs a textual name and a value");
+        }
         List<Variable> candidates = byName.get(name);
         Variable v = null;
         if (candidates != null) {
@@ -81,17 +142,16 @@ public final class ContextDecoder {
         if (v == null) {
             throw new BadContext(Problem.UNKNOWN, "unknown context " + (ns.isEmpty() ? "" : ns + ".") + name);
         }
-        String type = n.path("type").asText("");
         String expected = "eventtype".equals(v.type().kind()) ? "event" : v.type().kind();
         if (!type.isEmpty() && !type.equals(expected) && !type.equals(v.type().kind())) {
             throw new BadContext(Problem.BAD_TYPE, "context " + name + " is a " + expected + ", the message says " + type);
         }
-        Object value = Literals.fromMessage(n.get("value"), v.type());
-        if (value == null) {
-            throw new BadContext(Problem.BAD_TYPE, "context " + name + ": " + n.get("value") + " is not a valid "
+        Object decoded = Literals.fromMessage(value, v.type());
+        if (decoded == null) {
+            throw new BadContext(Problem.BAD_TYPE, "context " + name + ": " + value + " is not a valid "
                     + expected + (v.type().literals() != null ? " " + v.type().literals() : ""));
         }
-        return new Sample(model.symbols().get(v.id()).slot(), value, time);
+        return new Sample(model.symbols().get(v.id()).slot(), decoded, time);
     }
 
     private static String firstLine(String s) {

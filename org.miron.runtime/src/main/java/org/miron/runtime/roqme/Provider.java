@@ -53,6 +53,8 @@ public final class Provider {
     private final Reasoner reasoner;
     private final int[] beliefIndexBySlot;
     private final double[] beliefEstimates;
+    private final int propertyCount;
+    private final boolean[] isProperty; // by belief index
     private final PriorityQueue<Due> queue = new PriorityQueue<>((a, b) -> a.time != b.time
             ? Long.compare(a.time, b.time) : Long.compare(a.seq, b.seq));
     private final BitSet pendingComputed = new BitSet();
@@ -111,6 +113,11 @@ public final class Provider {
             beliefIndexBySlot[b.slot()] = b.index();
         }
         reasoner = new Reasoner(periodMs, refs);
+        propertyCount = (int) model.beliefs().stream().filter(b -> b.decl().isProperty()).count();
+        isProperty = new boolean[refs.length];
+        for (CompiledBelief b : model.beliefs()) {
+            isProperty[b.index()] = b.decl().isProperty();
+        }
     }
 
     private static List<List<Integer>> lists(int n) {
@@ -246,8 +253,8 @@ public final class Provider {
             fired.add(o.id());
             for (CompiledAction a : o.actions()) {
                 switch (a.kind()) {
-                    case "reinforces", "undermines" -> reasoner.add(beliefIndexBySlot[a.target()], a.ratio(), a.survivalMs(), k);
-                    case "clears" -> reasoner.clear(beliefIndexBySlot[a.target()]);
+                    case REINFORCES, UNDERMINES -> reasoner.add(beliefIndexBySlot[a.target()], a.ratio(), a.survivalMs(), k);
+                    case CLEARS -> reasoner.clear(beliefIndexBySlot[a.target()]);
                     default -> {
                     }
                 }
@@ -270,11 +277,11 @@ public final class Provider {
             }
         }
         propagate(0); // observations reading beliefs: their firings count at the next tick
-        double[] props = new double[(int) model.beliefs().stream().filter(b -> b.decl().isProperty()).count()];
+        double[] props = new double[propertyCount];
         int i = 0;
-        for (CompiledBelief b : model.beliefs()) {
-            if (b.decl().isProperty()) {
-                props[i++] = beliefEstimates[b.index()];
+        for (int b = 0; b < isProperty.length; b++) {
+            if (isProperty[b]) {
+                props[i++] = beliefEstimates[b];
             }
         }
         return new Tick(k, time, props, fired);
@@ -345,15 +352,15 @@ public final class Provider {
             listener.fired(o, store.now());
             for (CompiledAction a : o.actions()) {
                 switch (a.kind()) {
-                    case "sets" -> {
+                    case SETS -> {
                         if (sets == null) {
                             sets = new ArrayList<>();
                         }
                         sets.add(a);
                     }
-                    case "starts" -> schedule(timers[timerBySlot[a.target()]], t -> t.start(store.now()));
-                    case "stops" -> schedule(timers[timerBySlot[a.target()]], t -> t.stop(store.now()));
-                    case "resumes" -> schedule(timers[timerBySlot[a.target()]], t -> t.resume(store.now()));
+                    case STARTS -> schedule(timers[timerBySlot[a.target()]], t -> t.start(store.now()));
+                    case STOPS -> schedule(timers[timerBySlot[a.target()]], t -> t.stop(store.now()));
+                    case RESUMES -> schedule(timers[timerBySlot[a.target()]], t -> t.resume(store.now()));
                     default -> {
                     }
                 }

@@ -62,9 +62,7 @@ public final class Replay {
             }
             ContextDecoder.Sample s;
             try {
-                s = decoder.decode(Json.MAPPER.readTree(line));
-            } catch (IOException e) {
-                throw new TraceException(traceName + ":" + lineNo + ": error [trace]: not a JSON object");
+                s = decoder.decode(line);
             } catch (ContextDecoder.BadContext e) {
                 throw new TraceException(traceName + ":" + lineNo + ": error [trace]: " + e.getMessage());
             }

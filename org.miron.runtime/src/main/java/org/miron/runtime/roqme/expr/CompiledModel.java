@@ -41,7 +41,15 @@ public record CompiledModel(RoqmeModel model, int slots, Map<String, Symbol> sym
      * {@code kind}: reinforces/undermines ({@code ratio} r, {@code survivalMs} resolved), clears,
      * sets ({@code target} var slot, {@code value}), starts/stops/resumes ({@code target} timer index).
      */
-    public record CompiledAction(String kind, int target, double ratio, long survivalMs, ValueNode value) {
+    public record CompiledAction(Kind kind, int target, double ratio, long survivalMs, ValueNode value) {
+        /** The action kinds; an enum so that a tick does not compare strings. */
+        public enum Kind {
+            REINFORCES, UNDERMINES, CLEARS, SETS, STARTS, STOPS, RESUMES;
+
+            static Kind of(String text) {
+                return valueOf(text.toUpperCase(java.util.Locale.ROOT));
+            }
+        }
     }
 
     /** A property or beliefvar; {@code expr} for a property defined by an expression of other beliefs. */

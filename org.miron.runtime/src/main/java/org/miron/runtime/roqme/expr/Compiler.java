@@ -172,7 +172,7 @@ public final class Compiler {
                     throw error("roqme-action", o.id() + ": " + a.belief() + " is not a property or beliefvar");
                 }
                 if (kind.equals("clears")) {
-                    return new CompiledAction(kind, b.slot(), 1, 0, null);
+                    return new CompiledAction(CompiledAction.Kind.of(kind), b.slot(), 1, 0, null);
                 }
                 RoqmeModel.Belief decl = model.beliefs().stream().filter(x -> x.id().equals(b.id())).findFirst().orElseThrow();
                 long survival = a.survivalMs() != null ? a.survivalMs()
@@ -186,7 +186,7 @@ public final class Compiler {
                 } catch (IllegalArgumentException e) {
                     throw error("roqme-action", o.id() + ": " + e.getMessage());
                 }
-                return new CompiledAction(kind, b.slot(), r, survival, null);
+                return new CompiledAction(CompiledAction.Kind.of(kind), b.slot(), r, survival, null);
             }
             case "sets" -> {
                 Symbol v = lookup(a.var(), "var");
@@ -196,14 +196,14 @@ public final class Compiler {
                 if (a.value() == null) {
                     throw error("roqme-action", o.id() + ": sets " + a.var() + " without a value");
                 }
-                return new CompiledAction(kind, v.slot(), 1, 0, value(a.value(), new TreeSet<>()));
+                return new CompiledAction(CompiledAction.Kind.of(kind), v.slot(), 1, 0, value(a.value(), new TreeSet<>()));
             }
             case "starts", "stops", "resumes" -> {
                 Symbol t = lookup(a.timer(), "timer");
                 if (t.kind() != Kind.TIMER) {
                     throw error("roqme-action", o.id() + ": " + kind + " " + a.timer() + ", which is not a timer");
                 }
-                return new CompiledAction(kind, t.slot(), 1, 0, null);
+                return new CompiledAction(CompiledAction.Kind.of(kind), t.slot(), 1, 0, null);
             }
             default -> throw error("roqme-action", o.id() + ": unsupported action kind '" + kind + "'");
         }

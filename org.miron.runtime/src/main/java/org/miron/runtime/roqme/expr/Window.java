@@ -21,6 +21,10 @@ public final class Window {
     private long[] times;
     private int head;
     private int size;
+    // Kept up to date on every push and drop, so a sample costs O(1) except for min and max:
+    private double sum; // of the samples in the window (recomputed exactly now and then: no drift)
+    private int breaks; // adjacent pairs that break the trend (increasing, decreasing, stable)
+    private int drops;
 
     Window(int index, int slot, ValueNode source, EventNode event, int[] sourceDeps, Aggregate fn, int maxSamples, long ms) {
         this.index = index;
@@ -76,15 +80,19 @@ public final class Window {
         }
         trim(s.now());
         if (maxSamples > 0 && size == maxSamples) {
-            head = (head + 1) % values.length;
-            size--;
+            dropHead();
         } else if (size == values.length) {
             grow();
         }
+        double x = fn == null ? s.now() : v;
+        if (size > 0 && !keepsTrend(values[(head + size - 1) % values.length], x)) {
+            breaks++;
+        }
         int i = (head + size) % values.length;
-        values[i] = fn == null ? s.now() : v;
+        values[i] = x;
         times[i] = s.now();
         size++;
+        sum += x;
         s.set(slot, value());
     }
 
@@ -105,18 +113,53 @@ public final class Window {
     private boolean trim(long now) {
         boolean dropped = false;
         while (ms > 0 && size > 0 && times[head] <= now - ms) {
-            head = (head + 1) % values.length;
-            size--;
+            dropHead();
             dropped = true;
         }
         return dropped;
+    }
+
+    private void dropHead() {
+        double x = values[head];
+        if (size > 1 && !keepsTrend(x, values[(head + 1) % values.length])) {
+            breaks--;
+        }
+        head = (head + 1) % values.length;
+        size--;
+        sum -= x;
+        if (size == 0) {
+            sum = 0;
+        } else if (++drops % 1024 == 0) {
+            sum = 0;
+            for (int i = 0; i < size; i++) {
+                sum += values[(head + i) % values.length];
+            }
+        }
+    }
+
+    private boolean keepsTrend(double prev, double v) {
+        if (fn == null) {
+            return true;
+        }
+        return switch (fn) {
+            case INCREASING -> v > prev;
+            case DECREASING -> v < prev;
+            case STABLE -> v == prev;
+            default -> true;
+        };
     }
 
     private Object value() {
         if (fn == null) { // period: time between the last two updates
             return size < 2 ? null : values[(head + size - 1) % values.length] - values[(head + size - 2) % values.length];
         }
-        return fn.apply(values, head, size);
+        return switch (fn) {
+            case COUNT -> (double) size;
+            case SUM -> size == 0 ? 0.0 : sum;
+            case AVG -> size == 0 ? null : (Object) (sum / size);
+            case INCREASING, DECREASING, STABLE -> size < 2 ? null : (Object) (breaks == 0);
+            default -> fn.apply(values, head, size); // min, max
+        };
     }
 
     private void grow() {
