@@ -161,6 +161,7 @@ public class LiveProviderTest {
                 dock = f.probe.await(Topics.VARIANT_PREFIX + "task", b -> "dock".equals(b.path("value").asText()), 2000);
             }
             assertNotNull("miron.variant.task = dock from the provider's power_autonomy", dock);
+            assertTrue(provider.fired() > 0);
         }
     }
 }
