@@ -442,15 +442,14 @@ public final class Compiler {
         return Values.ref(slot);
     }
 
-    /** The checker's static type, or one inferred when the generator left it out. */
+    /** A reference's declared type; else the checker's static type, or one inferred when absent. */
     String typeOf(JsonNode e) {
+        if (e.has("ref") && symbols.containsKey(e.get("ref").asText())) {
+            return symbols.get(e.get("ref").asText()).valueType(); // the declaration knows best
+        }
         String t = e.path("type").asText(null);
         if (t != null && !t.equals("unknown")) {
             return t;
-        }
-        if (e.has("ref")) {
-            Symbol s = symbols.get(e.get("ref").asText());
-            return s == null ? "unknown" : s.valueType();
         }
         String op = e.path("op").asText("");
         if (List.of("!", "&", "|", "=", "!=", "<", ">", "<=", ">=").contains(op)) {
