@@ -15,6 +15,9 @@ import org.miron.runtime.roqme.model.ModelReader;
 
 /** A model the provider cannot run is refused at start with the declaration's file:line:col and the reason. */
 public class BadModelTest {
+    @org.junit.Rule
+    public org.junit.rules.TemporaryFolder tmp = new org.junit.rules.TemporaryFolder();
+
     private static String refused(Harness h, Map<String, String> params) {
         try {
             RoqmeFixtures.compile(h.json(), params);
@@ -79,7 +82,7 @@ public class BadModelTest {
 
     @Test
     public void unreadableFiles() throws Exception {
-        Path dir = Files.createTempDirectory("roqme-bad");
+        Path dir = tmp.getRoot().toPath();
         Path f = dir.resolve("m.roqme.json");
         Files.writeString(f, "{\"format\":1,\n \"contexts\": [}");
         try {

@@ -3,7 +3,8 @@ package org.miron.runtime.roqme.expr;
 /**
  * The window functions over {@code size} samples of a ring buffer starting at {@code head}. An empty
  * window has no average, minimum or maximum (unknown); its count and sum are 0. Trends need two
- * samples: {@code increasing} means every sample is greater than the one before.
+ * samples (a sample window: all n, see Window): {@code increasing} means every sample is greater
+ * than the one before.
  */
 enum Aggregate {
     AVG, MIN, MAX, SUM, COUNT, INCREASING, DECREASING, STABLE;

@@ -157,7 +157,8 @@ public final class Window {
             case COUNT -> (double) size;
             case SUM -> size == 0 ? 0.0 : sum;
             case AVG -> size == 0 ? null : (Object) (sum / size);
-            case INCREASING, DECREASING, STABLE -> size < 2 ? null : (Object) (breaks == 0);
+            // a trend over the last n samples needs n of them; over a time window, two
+            case INCREASING, DECREASING, STABLE -> size < Math.max(2, maxSamples) ? null : (Object) (breaks == 0);
             default -> fn.apply(values, head, size); // min, max
         };
     }
