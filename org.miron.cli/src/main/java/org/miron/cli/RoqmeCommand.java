@@ -74,7 +74,7 @@ public final class RoqmeCommand implements Runnable {
             description = "Run the provider on the bus: roqme.context in; roqme.estimate of every property each period, "
                     + "roqme.observation when an observation fires, roqme.status out.",
             exitCodeListHeading = ExitCodes.HEADING,
-            exitCodeList = { "2:the model is refused (file:line:col), start-up error or bad usage", ExitCodes.SIGTERM,
+            exitCodeList = { "2:the model is refused (file:line:col), an unreadable --state file, bad usage", ExitCodes.SIGTERM,
                     ExitCodes.SIGINT })
     static final class Run implements Callable<Integer> {
         @Spec
@@ -87,6 +87,10 @@ public final class RoqmeCommand implements Runnable {
                 description = "re-publish roqme.status at least this often (default: ${DEFAULT-VALUE})")
         long statusInterval = 5000;
 
+        @Option(names = "--state", paramLabel = "FILE", description = "keep the evidence in FILE across restarts "
+                + "(written every second and on stop; default: evidence is lost on restart)")
+        Path state;
+
         @Mixin
         BrokerEndpoints.BusIn busIn = new BrokerEndpoints.BusIn();
 
@@ -95,11 +99,21 @@ public final class RoqmeCommand implements Runnable {
 
         @Override
         public Integer call() {
-            CompiledModel m = options.load("run", spec.commandLine().getErr());
+            PrintWriter err = spec.commandLine().getErr();
+            CompiledModel m = options.load("run", err);
             if (m == null) {
                 return 2;
             }
-            LiveProvider p = new LiveProvider(m, options.period, statusInterval, busIn.endpoint, busOut.endpoint).start();
+            LiveProvider p = new LiveProvider(m, options.period, statusInterval, busIn.endpoint, busOut.endpoint);
+            if (state != null) {
+                try {
+                    p.state(state);
+                } catch (IOException e) {
+                    err.println("miron roqme run: error: " + e.getMessage());
+                    return 2;
+                }
+            }
+            p.start();
             System.out.println("miron roqme run: model " + m.model().model() + ", " + m.observations().size()
                     + " observations, period " + options.period + " ms, bus " + busIn.endpoint + " / " + busOut.endpoint);
             return UntilShutdown.run("roqme run", p);

@@ -2,6 +2,8 @@ package org.miron.runtime.roqme;
 
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -23,8 +25,9 @@ import org.miron.runtime.roqme.model.RoqmeModel;
  * {@code roqme.status} on bad input and every status interval. One thread runs the provider on the
  * wall clock (ms since the epoch, so cron schedules are in UTC); the bus thread only queues what
  * arrives. A context's time is its arrival time: clocks of other machines are not trusted.
- * Evidence lives in memory: a restarted provider starts from the references, and the broker's
- * last-value cache gives it the current contexts back (docs/roqme-provider.md, "Restart").
+ * Evidence lives in memory unless {@link #state} names a file: a restarted provider without one
+ * starts from the references; either way the broker's last-value cache gives it the current
+ * contexts back (docs/roqme-provider.md, "Restart").
  */
 public final class LiveProvider implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(LiveProvider.class.getName());
@@ -44,6 +47,9 @@ public final class LiveProvider implements AutoCloseable {
     private final Thread thread;
     private final CountDownLatch stopped = new CountDownLatch(1);
     private volatile boolean running = true;
+    private Path stateFile;
+    private EvidenceState.Saved saved;
+    private long lastSave;
     private volatile long ticks;
     private volatile long fired;
 
@@ -57,6 +63,20 @@ public final class LiveProvider implements AutoCloseable {
         this.decoder = new ContextDecoder(model);
         this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived);
         this.thread = new Thread(this::loop, "roqme-provider");
+    }
+
+    /**
+     * Keeps the evidence in {@code file} across restarts (written at most every second and on
+     * close); reads it now, so an unreadable file is a start-up error. Call before {@link #start}.
+     */
+    public LiveProvider state(Path file) throws IOException {
+        this.saved = EvidenceState.read(file);
+        this.stateFile = file;
+        if (saved != null && !saved.model().equals(model.model().model())) {
+            LOG.warning("roqme: " + file + " holds the evidence of model " + saved.model() + ", not "
+                    + model.model().model() + ": its beliefs are matched by id");
+        }
+        return this;
     }
 
     public LiveProvider start() {
@@ -79,6 +99,11 @@ public final class LiveProvider implements AutoCloseable {
     private void loop() {
         long start = clock.getAsLong();
         Provider p = new Provider(model, periodMs, start).onFire(this::publishFiring).start();
+        if (saved != null) {
+            p.restore(saved.beliefs(), Math.max(0, start - saved.time()));
+            LOG.info("roqme: evidence restored from " + stateFile + " (saved " + (start - saved.time()) + " ms ago)");
+        }
+        lastSave = start;
         long last = start;
         long nextStatus = start;
         long badSeen = 0;
@@ -99,6 +124,9 @@ public final class LiveProvider implements AutoCloseable {
                     publishTick(p.tick());
                     ticks++;
                 }
+                if (stateFile != null && now - lastSave >= Math.max(1000, periodMs)) {
+                    save(p, now);
+                }
                 last = now;
                 if (status.badTotal() != badSeen || now >= nextStatus) {
                     badSeen = status.badTotal();
@@ -111,7 +139,20 @@ public final class LiveProvider implements AutoCloseable {
         } catch (RuntimeException e) {
             LOG.severe("roqme: provider failed: " + e);
         } finally {
+            if (stateFile != null) {
+                save(p, clock.getAsLong());
+            }
             stopped.countDown();
+        }
+    }
+
+    private void save(Provider p, long now) {
+        lastSave = now;
+        try {
+            // the evidence as of the last tick: its ages count from that tick's time
+            EvidenceState.write(stateFile, model.model().model(), p.nextTickTime() - periodMs, p.evidence());
+        } catch (IOException | RuntimeException e) {
+            LOG.warning("roqme: cannot write the state file " + stateFile + ": " + e.getMessage());
         }
     }
 

@@ -287,6 +287,28 @@ public final class Provider {
         return new Tick(k, time, props, fired);
     }
 
+    /** The live evidence of every belief by id, aged as of the last tick (for {@code --state}). */
+    public Map<String, List<Reasoner.Piece>> evidence() {
+        Map<String, List<Reasoner.Piece>> out = new java.util.LinkedHashMap<>();
+        for (CompiledBelief b : model.beliefs()) {
+            out.put(b.decl().id(), reasoner.pieces(b.index(), tick));
+        }
+        return out;
+    }
+
+    /**
+     * Restores saved evidence, {@code elapsedMs} older than when it was saved (it kept decaying
+     * while the provider was down); beliefs the model no longer has are skipped. Call after
+     * {@link #start} and before the first tick.
+     */
+    public void restore(Map<String, List<Reasoner.Piece>> saved, long elapsedMs) {
+        for (CompiledBelief b : model.beliefs()) {
+            for (Reasoner.Piece p : saved.getOrDefault(b.decl().id(), List.of())) {
+                reasoner.restore(b.index(), new Reasoner.Piece(p.r(), p.survivalMs(), p.ageMs() + elapsedMs), tick);
+            }
+        }
+    }
+
     /** The current estimate of belief {@code index} (declaration order of beliefs). */
     public double estimate(int index) {
         return beliefEstimates[index];

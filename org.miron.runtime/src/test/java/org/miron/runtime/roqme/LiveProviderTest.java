@@ -145,6 +145,46 @@ public class LiveProviderTest {
     }
 
     @Test
+    public void aStateFileKeepsTheEvidenceAcrossARestart() throws Exception {
+        startBus();
+        java.nio.file.Path state = tmp.getRoot().toPath().resolve("roqme.state.json");
+        provider = new LiveProvider(model, PERIOD, 5000, ep.busIn(), ep.busOut()).state(state).start();
+        assertTrue(provider.awaitReady(TIMEOUT));
+        awaitAccepted("BatteryLevel", "number", "50");
+        input.publish(Topics.CONTEXT, context("BatteryLevel", "number", "20"));
+        assertNotNull(probe.await(Topics.ESTIMATE, b -> b.path("name").asText().equals("power_autonomy")
+                && b.path("value").asDouble() < 0.1, TIMEOUT));
+        provider.close();
+        // the battery is charged meanwhile: batteryLow does not fire again, only the saved evidence can keep the estimate low
+        input.publish(Topics.CONTEXT, context("BatteryLevel", "number", "60"));
+        Thread.sleep(300);
+        long restart = System.currentTimeMillis();
+        provider = new LiveProvider(model, PERIOD, 5000, ep.busIn(), ep.busOut()).state(state).start();
+        JsonNode first = probe.await(Topics.ESTIMATE, b -> b.path("name").asText().equals("power_autonomy")
+                && b.path("time").asLong() >= restart, TIMEOUT);
+        assertTrue("restored evidence: " + first, first.path("value").asDouble() < 0.15);
+        provider.close();
+        // without the file, the same restart starts from the reference
+        long plain = System.currentTimeMillis();
+        provider = new LiveProvider(model, PERIOD, 5000, ep.busIn(), ep.busOut()).start();
+        JsonNode fresh = probe.await(Topics.ESTIMATE, b -> b.path("name").asText().equals("power_autonomy")
+                && b.path("time").asLong() >= plain, TIMEOUT);
+        assertEquals(0.5, fresh.path("value").asDouble(), 1e-12);
+    }
+
+    @Test
+    public void anUnreadableStateFileIsAStartUpError() throws Exception {
+        java.nio.file.Path state = tmp.getRoot().toPath().resolve("bad.json");
+        java.nio.file.Files.writeString(state, "{\"format\":1,\"time\":5,\"beliefs\":{\"safety\":[{\"r\":-1}]}}");
+        try {
+            new LiveProvider(model, PERIOD, 5000, "tcp://127.0.0.1:1", "tcp://127.0.0.1:1").state(state);
+            org.junit.Assert.fail();
+        } catch (java.io.IOException e) {
+            assertTrue(e.getMessage(), e.getMessage().startsWith(state + ": bad evidence of safety"));
+        }
+    }
+
+    @Test
     public void aContextChangeLeadsTheEngineToAVariant() throws Exception {
         try (EngineFixture f = new EngineFixture(tmp.getRoot().toPath())) {
             f.startAll(); // testbot: task = dock when power_autonomy < 0.3

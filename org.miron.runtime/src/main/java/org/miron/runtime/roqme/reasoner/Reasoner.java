@@ -22,6 +22,8 @@ public final class Reasoner {
 
     /** Evidence of one ratio and survival: its ratio by age in ticks. */
     static final class Kind {
+        final double r;
+        final long survivalMs;
         final double p0;
         final double p1;
         final double lambda;
@@ -31,6 +33,8 @@ public final class Reasoner {
         int dropAge = Integer.MAX_VALUE; // first age whose ratio is within 0.01 of 1
 
         Kind(double r, long survivalMs, long periodMs) {
+            this.r = r;
+            this.survivalMs = survivalMs;
             p1 = 1 / (1 + r);
             p0 = r * p1;
             lambda = (Math.log(Math.abs(p1 - 0.5)) - LN_1_78) / (2.0 * survivalMs);
@@ -98,6 +102,25 @@ public final class Reasoner {
     public void add(int b, double r, long survivalMs, long k) {
         Kind kind = kinds.computeIfAbsent(r + "/" + survivalMs, x -> new Kind(r, survivalMs, periodMs));
         evidence.get(b).add(kind, k);
+    }
+
+    /** One live piece of evidence as saved across restarts: its ratio, survival and age. */
+    public record Piece(double r, long survivalMs, long ageMs) {
+    }
+
+    /** The live evidence of belief b at tick k, oldest first. */
+    public List<Piece> pieces(int b, long k) {
+        Pieces p = evidence.get(b);
+        List<Piece> out = new ArrayList<>(p.size);
+        for (int i = 0; i < p.size; i++) {
+            out.add(new Piece(p.kinds[i].r, p.kinds[i].survivalMs, (k - p.ticks[i]) * periodMs));
+        }
+        return out;
+    }
+
+    /** Restores a saved piece as of tick k: its age is rounded to whole ticks of this period. */
+    public void restore(int b, Piece piece, long k) {
+        add(b, piece.r(), piece.survivalMs(), k - Math.round((double) piece.ageMs() / periodMs));
     }
 
     /** {@code clears}: drops all evidence of belief b. */
