@@ -79,7 +79,7 @@ public final class Engine implements AutoCloseable {
         }
         running = true;
         bus = new BusClient("engine", options.busIn, options.busOut,
-                List.of(Topics.ESTIMATE, Topics.CONTEXT, Topics.OVERRIDE_PREFIX), this::onMessage).onBrokerSync(this::onBrokerSync).start();
+                List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).onBrokerSync(this::onBrokerSync).start();
         sender = new ParameterSender(options.request, options.ackTimeoutMs, options.backoffMinMs,
                 options.backoffMaxMs, new SenderReports()).start();
         loop = new Thread(this::solveLoop, "engine-solve");
@@ -91,6 +91,9 @@ public final class Engine implements AutoCloseable {
     }
 
     private void onMessage(String topic, byte[] body) {
+        if (topic.equals(Topics.OBSERVATION) || topic.equals(Topics.ROQME_STATUS)) {
+            return; // the RoQME provider's own outputs, not inputs
+        }
         try {
             decoder.apply(topic, body);
         } catch (BadInputException e) {

@@ -189,6 +189,17 @@ public class LiveProviderTest {
         try (EngineFixture f = new EngineFixture(tmp.getRoot().toPath())) {
             f.startAll(); // testbot: task = dock when power_autonomy < 0.3
             ep = f.endpoints;
+            // the engine ignores the provider's own topics: only the bogus one, sent last, is unknown input
+            long unknown = f.engine.status().get("unknownInput");
+            f.publish(Topics.OBSERVATION, "{\"name\":\"batteryLow\",\"namespace\":\"Intralogistics\",\"time\":1,\"actions\":[]}");
+            f.publish(Topics.ROQME_STATUS, "{\"time\":1,\"model\":\"intralogistics\",\"state\":\"ok\"}");
+            f.publish("roqme.bogus", "{\"name\":\"x\"}");
+            long end0 = System.currentTimeMillis() + TIMEOUT;
+            while (f.engine.status().get("unknownInput") == unknown && System.currentTimeMillis() < end0) {
+                Thread.sleep(10);
+            }
+            Thread.sleep(200);
+            assertEquals(unknown + 1, f.engine.status().get("unknownInput"));
             provider = new LiveProvider(model, PERIOD, 5000, ep.busIn(), ep.busOut()).start();
             assertTrue(provider.awaitReady(TIMEOUT));
             // a low battery, above the engine's own 5 % rule: only the provider's estimate can dock it

@@ -128,7 +128,7 @@ public final class Compiler {
             }
             observations.add(new CompiledObservation(observations.size(), o.id(), o, p, ints(deps), actions));
         }
-        return new CompiledModel(model, slots, Map.copyOf(symbols), order(), List.copyOf(windows), observations,
+        return new CompiledModel(model, slots, Map.copyOf(symbols), DependencyOrder.of(computedBySlot, atBySlot), List.copyOf(windows), observations,
                 beliefs, initial, asGiven, new java.util.concurrent.atomic.AtomicBoolean());
     }
 
@@ -466,33 +466,6 @@ public final class Compiler {
             return "boolean";
         }
         return e.has("enum") ? "enum" : e.has("event") ? "event" : "number";
-    }
-
-    /** The computed slots in dependency order (a cycle is an error at one of its declarations). */
-    private List<Computed> order() throws ModelException {
-        List<Computed> out = new ArrayList<>();
-        Map<Integer, Integer> state = new HashMap<>(); // 1 visiting, 2 done
-        for (Integer slot : new TreeSet<>(computedBySlot.keySet())) {
-            visit(slot, state, out);
-        }
-        return out;
-    }
-
-    private void visit(int slot, Map<Integer, Integer> state, List<Computed> out) throws ModelException {
-        Computed c = computedBySlot.get(slot);
-        if (c == null || Integer.valueOf(2).equals(state.get(slot))) {
-            return;
-        }
-        if (Integer.valueOf(1).equals(state.get(slot))) {
-            at = atBySlot.get(slot);
-            throw error("roqme-cycle", "a derived context or var depends on itself");
-        }
-        state.put(slot, 1);
-        for (int d : c.deps()) {
-            visit(d, state, out);
-        }
-        state.put(slot, 2);
-        out.add(c);
     }
 
     private ModelException error(String code, String message) {
