@@ -94,10 +94,10 @@ public final class Provider {
             }
         }
         observationDependents = arrays(od);
-        timers = new TimerState[model.model().timers().size()];
+        timers = new TimerState[model.timers().size()];
         timerBySlot = new int[n];
         for (int i = 0; i < timers.length; i++) {
-            var t = model.model().timers().get(i);
+            var t = model.timers().get(i);
             timers[i] = new TimerState(t, model.symbols().get(t.id()).slot());
             timerBySlot[timers[i].slot] = i;
         }

@@ -141,10 +141,12 @@ public class FunctionsTest {
     public void arraysAndTheirFunctions() throws Exception {
         Harness h = new Harness().var("fi", call("first", ref("arr"))).var("la", call("last", ref("arr")))
                 .var("a1", call("at", ref("arr"), num(1))).var("sz", call("size", ref("arr")))
-                .var("av", call("avg", ref("arr"))).start();
+                .var("av", call("avg", ref("arr"))).var("em", call("isEmpty", ref("arr"))).start();
+        assertEquals(null, h.value("em"));
         h.in("arr", List.of(1.0, 2.0, 6.0), 100);
         assertEquals(List.of(1.0, 6.0, 2.0, 3.0, 3.0),
                 List.of(h.value("fi"), h.value("la"), h.value("a1"), h.value("sz"), h.value("av")));
+        assertEquals(false, h.value("em"));
         Harness g = new Harness().obs("o", call("includes", ref("arr"), num(5))).start();
         assertEquals(NONE, g.in("arr", List.of(1.0, 2.0, 3.0), 100));
         assertEquals(O, g.in("arr", List.of(1.0, 5.0, 3.0), 200));

@@ -81,6 +81,18 @@ public class TimersTest {
     }
 
     @Test
+    public void scheduleCallInAPatternIsATimer() throws Exception {
+        Harness h = new Harness().obs("o", "{\"call\":\"schedule\",\"args\":[{\"string\":\"0 * * * *\"}]}").start();
+        List<Long> times = new ArrayList<>();
+        for (long t = 0; t <= 3 * 3_600_000; t += 60_000) {
+            if (h.until(t).contains("o")) {
+                times.add(t);
+            }
+        }
+        assertEquals(List.of(3_600_000L, 7_200_000L, 10_800_000L), times);
+    }
+
+    @Test
     public void cronFields() {
         long t0 = Instant.parse("2026-11-26T05:00:00Z").toEpochMilli(); // a Thursday
         assertEquals(Instant.parse("2026-11-26T08:00:00Z").toEpochMilli(), Cron.parse("0 8-18/2 * * *").next(t0));

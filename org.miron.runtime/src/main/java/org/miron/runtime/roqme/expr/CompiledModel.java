@@ -5,11 +5,12 @@ import java.util.Map;
 import org.miron.runtime.roqme.model.RoqmeModel;
 
 /**
- * A runtime model ready to run (for one provider: see {@link #claim}): slots, the computed slots in dependency order, the compiled
- * observations and the beliefs' reasoner parameters.
+ * A runtime model ready to run (for one provider: see {@link #claim}): slots, the computed slots in
+ * dependency order, the timers (the declared ones, then one per {@code schedule("...")} call in a
+ * pattern), the compiled observations and the beliefs' reasoner parameters.
  */
 public record CompiledModel(RoqmeModel model, int slots, Map<String, Symbol> symbols, List<Computed> computed,
-        List<Window> windows, List<CompiledObservation> observations, List<CompiledBelief> beliefs,
+        List<RoqmeModel.Timer> timers, List<Window> windows, List<CompiledObservation> observations, List<CompiledBelief> beliefs,
         Map<Integer, Object> initialValues, Map<String, String> params, java.util.concurrent.atomic.AtomicBoolean claimed) {
 
     /**

@@ -27,6 +27,7 @@ public final class Compiler {
     private final RoqmeModel model;
     private final Map<String, Symbol> symbols = new LinkedHashMap<>();
     private final List<Window> windows = new ArrayList<>();
+    private final List<RoqmeModel.Timer> timers = new ArrayList<>();
     private final Map<Integer, Computed> computedBySlot = new HashMap<>();
     private final Map<Integer, String> atBySlot = new HashMap<>();
     private int slots;
@@ -63,6 +64,7 @@ public final class Compiler {
                 }
             }
             put(new Symbol(t.id(), Kind.TIMER, slots++, null, t.at()));
+            timers.add(t);
         }
         for (RoqmeModel.Belief b : model.beliefs()) {
             at = b.at();
@@ -128,7 +130,7 @@ public final class Compiler {
             }
             observations.add(new CompiledObservation(observations.size(), o.id(), o, p, ints(deps), actions));
         }
-        return new CompiledModel(model, slots, Map.copyOf(symbols), DependencyOrder.of(computedBySlot, atBySlot), List.copyOf(windows), observations,
+        return new CompiledModel(model, slots, Map.copyOf(symbols), DependencyOrder.of(computedBySlot, atBySlot), List.copyOf(timers), List.copyOf(windows), observations,
                 beliefs, initial, asGiven, new java.util.concurrent.atomic.AtomicBoolean());
     }
 
@@ -271,6 +273,9 @@ public final class Compiler {
                 }
             }
         }
+        if (e.has("call") && e.get("call").asText().equals("schedule")) {
+            return schedule(e, deps);
+        }
         if (e.has("call") && List.of("eventWhen", "update").contains(e.get("call").asText())) {
             JsonNode arg = e.path("args").path(0);
             if (arg.isMissingNode()) {
@@ -286,6 +291,27 @@ public final class Compiler {
             throw error("roqme-pattern", "unsupported event expression " + e);
         }
         return "boolean".equals(type) ? whenTrue(e, deps) : update(e, deps);
+    }
+
+    /** {@code schedule("cron")} in a pattern: an event at the cron times, as an unnamed timer. */
+    private EventNode schedule(JsonNode e, TreeSet<Integer> deps) throws ModelException {
+        JsonNode arg = e.path("args").path(0);
+        if (!arg.has("string")) {
+            throw error("roqme-cron", "schedule(...) needs a cron string literal");
+        }
+        String cron = arg.get("string").asText();
+        try {
+            Cron.parse(cron);
+        } catch (IllegalArgumentException x) {
+            throw error("roqme-cron", "schedule(\"" + cron + "\"): " + x.getMessage());
+        }
+        String id = "schedule(\"" + cron + "\")#" + timers.size();
+        RoqmeModel.Timer t = new RoqmeModel.Timer(id, id, null, at, null, cron, 0, false, false);
+        Symbol s = new Symbol(id, Kind.TIMER, slots++, null, at);
+        symbols.put(id, s);
+        timers.add(t);
+        deps.add(s.slot());
+        return Events.source(s.slot(), false);
     }
 
     private EventNode implicit(Map.Entry<String, JsonNode> notOf, TreeSet<Integer> deps) throws ModelException {
