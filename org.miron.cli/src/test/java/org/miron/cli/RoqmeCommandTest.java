@@ -43,12 +43,25 @@ public class RoqmeCommandTest {
         String[] lines = cli.out().split("\n");
         assertEquals("tick,time,safety,autonomy,fired", lines[0]);
         assertEquals("by default through the tick holding the last record (t = 5999 ms: tick 6)", 7, lines.length);
+        assertEquals("6,6000.0,", lines[6].substring(0, 9));
         assertEquals("1,1000.0,0.3333333333333333,0.8,near", lines[1]);
         String[] t6 = lines[6].split(",");
         assertEquals("6", t6[0]);
         assertEquals("low", t6[4]);
         assertEquals(0.483393, Double.parseDouble(t6[2]), 1e-6);
         assertEquals(0.145455, Double.parseDouble(t6[3]), 1e-6);
+    }
+
+    @Test
+    public void replayTimesHaveNoExponent() throws Exception {
+        Path trace = dir.resolve("late.jsonl");
+        Files.writeString(trace, "{\"name\":\"Near\",\"value\":true,\"time\":0}\n{\"name\":\"Low\",\"value\":true,\"time\":86400000}\n");
+        Cli cli = new Cli();
+        assertEquals(0, cli.run("roqme", "replay", p("worked.roqme.json"), "--trace", trace.toString(), "--period", "60000"));
+        String[] lines = cli.out().split("\n");
+        assertEquals(1 + 1440, lines.length); // 24 h of minutes
+        assertTrue(lines[1440], lines[1440].startsWith("1440,86400000.0,"));
+        assertTrue(lines[1440], lines[1440].endsWith(",low"));
     }
 
     @Test

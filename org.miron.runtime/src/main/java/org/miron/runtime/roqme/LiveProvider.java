@@ -47,6 +47,9 @@ public final class LiveProvider implements AutoCloseable {
     private final Thread thread;
     private final CountDownLatch stopped = new CountDownLatch(1);
     private volatile boolean running = true;
+    private long last; // provider thread only: its clock, never going back
+    private long nextStatus; // provider thread only
+    private long badSeen; // provider thread only
     private Path stateFile;
     private EvidenceState.Saved saved;
     private long lastSave;
@@ -104,45 +107,52 @@ public final class LiveProvider implements AutoCloseable {
             LOG.info("roqme: evidence restored from " + stateFile + " (saved " + (start - saved.time()) + " ms ago)");
         }
         lastSave = start;
-        long last = start;
-        long nextStatus = start;
-        long badSeen = 0;
+        last = start;
+        nextStatus = start;
         publishStatus(start);
         try {
             while (running) {
-                long now = clock.getAsLong();
-                long wait = Math.min(p.nextTickTime(), Math.min(p.nextDue(), nextStatus)) - now;
-                Arrival a = wait > 0 ? inbox.poll(wait, TimeUnit.MILLISECONDS) : inbox.poll();
-                while (a != null) {
-                    last = Math.max(last, a.time());
-                    input(p, a, last);
-                    a = inbox.poll();
-                }
-                now = Math.max(last, clock.getAsLong());
-                p.advanceTo(now);
-                while (p.nextTickTime() <= now) {
-                    publishTick(p.tick());
-                    ticks++;
-                }
-                if (stateFile != null && now - lastSave >= Math.max(1000, periodMs)) {
-                    save(p, now);
-                }
-                last = now;
-                if (status.badTotal() != badSeen || now >= nextStatus) {
-                    badSeen = status.badTotal();
-                    publishStatus(now);
-                    nextStatus = now + statusIntervalMs;
+                try {
+                    round(p);
+                } catch (RuntimeException e) { // a bug must not silence the metrics: log it and go on
+                    LOG.severe("roqme: unexpected failure, continuing: " + e);
+                    Thread.sleep(100);
                 }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        } catch (RuntimeException e) {
-            LOG.severe("roqme: provider failed: " + e);
         } finally {
             if (stateFile != null) {
                 save(p, clock.getAsLong());
             }
             stopped.countDown();
+        }
+    }
+
+    /** One round of the provider thread: the inputs that arrived, what is due, ticks, status. */
+    private void round(Provider p) throws InterruptedException {
+        long now = clock.getAsLong();
+        long wait = Math.min(p.nextTickTime(), Math.min(p.nextDue(), nextStatus)) - now;
+        Arrival a = wait > 0 ? inbox.poll(wait, TimeUnit.MILLISECONDS) : inbox.poll();
+        while (a != null) {
+            last = Math.max(last, a.time()); // the provider's clock never goes back
+            input(p, a, last);
+            a = inbox.poll();
+        }
+        now = Math.max(last, clock.getAsLong());
+        p.advanceTo(now);
+        while (p.nextTickTime() <= now) {
+            publishTick(p.tick());
+            ticks++;
+        }
+        if (stateFile != null && now - lastSave >= Math.max(1000, periodMs)) {
+            save(p, now);
+        }
+        last = now;
+        if (status.badTotal() != badSeen || now >= nextStatus) {
+            badSeen = status.badTotal();
+            publishStatus(now);
+            nextStatus = now + statusIntervalMs;
         }
     }
 

@@ -109,7 +109,7 @@ public final class Replay {
         double time = (double) (t.timeMs() - startMs);
         if (format == Format.CSV) {
             StringBuilder b = new StringBuilder();
-            b.append(t.k()).append(',').append(time);
+            b.append(t.k()).append(',').append(plain(time));
             for (double e : t.estimates()) {
                 b.append(',').append(e);
             }
@@ -128,6 +128,12 @@ public final class Replay {
             out.write(Json.write(o));
             out.write('\n');
         }
+    }
+
+    /** A double without exponent ({@code 86400000.0}, not {@code 8.64E7}), every digit kept. */
+    static String plain(double v) {
+        String p = java.math.BigDecimal.valueOf(v).toPlainString();
+        return p.indexOf('.') < 0 ? p + ".0" : p;
     }
 
     /** The property names of a model in declaration order (the CSV's columns). */

@@ -90,7 +90,7 @@ public final class Literals {
         if ("eventtype".equals(type.kind())) {
             return Boolean.TRUE;
         }
-        if (type.cardinality() != null && type.cardinality() > 1) {
+        if (type.cardinality() != null) {
             if (!value.isArray() || value.size() != type.cardinality()) {
                 return null;
             }
