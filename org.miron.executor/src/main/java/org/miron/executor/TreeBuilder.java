@@ -69,6 +69,7 @@ public final class TreeBuilder {
     private final ActionRegistry registry;
     private final TreeContext context;
     private final Map<Resource, Map<String, BehaviorTree>> visibleTrees = new HashMap<>();
+    private final DeclaredOutputs declaredOutputs = new DeclaredOutputs();
     /** Makes the version-4 nodes while a version-4 tree is built; null for version 3. */
     private V4Nodes v4;
 
@@ -210,7 +211,7 @@ public final class TreeBuilder {
             return new SetBlackboardNode(info);
         }
         if (node instanceof Condition) {
-            return registry.create(new ActionSpec(requireId(node, info), ActionSpec.Kind.CONDITION, info));
+            return registry.create(declaredOutputs.spec(node, requireId(node, info), ActionSpec.Kind.CONDITION, info));
         }
         if (node instanceof Action) {
             if (!"Action".equals(node.getTag())) {
@@ -219,9 +220,9 @@ public final class TreeBuilder {
                 if (tree != null) {
                     return v4 != null ? subtreeV4(tree, info, blackboard, stack) : plainSubtree(tree, info, blackboard, stack);
                 }
-                return registry.create(new ActionSpec(node.getTag(), ActionSpec.Kind.ACTION, info));
+                return registry.create(declaredOutputs.spec(node, node.getTag(), ActionSpec.Kind.ACTION, info));
             }
-            return registry.create(new ActionSpec(requireId(node, info), ActionSpec.Kind.ACTION, info));
+            return registry.create(declaredOutputs.spec(node, requireId(node, info), ActionSpec.Kind.ACTION, info));
         }
         throw new BtBuildException(path + ": unsupported node " + node.getTag());
     }
@@ -366,7 +367,7 @@ public final class TreeBuilder {
     private static void remapByName(NodeInfo info, Blackboard blackboard) {
         info.ports().attributes().forEach((port, value) -> {
             if (!port.equals("name") && !port.equals(SHARED)) {
-                blackboard.remap(port, Ports.blackboardKey(port, value).orElse(value));
+                blackboard.remap(port, Ports.blackboardKey(port, value).orElse(value), info.ports().madeBy(port));
             }
         });
     }
