@@ -30,6 +30,7 @@
  *
  * <p>Adding a built-in node: one entry in {@link org.miron.bt.nodes.BuiltinNodes} (and its keyword
  * and rule in Bt.xtext, which the test demands), and its executor class in the executor's builder
- * table.
+ * table (org.miron.executor's BuiltinFactories, whose BuiltinFactoriesTest fails until it is there;
+ * the executor's README, "Adding a built-in node").
  */
 package org.miron.bt.nodes;

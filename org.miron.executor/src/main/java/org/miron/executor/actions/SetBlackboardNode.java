@@ -1,5 +1,8 @@
 package org.miron.executor.actions;
 
+import static org.miron.bt.nodes.BuiltinNodes.OUTPUT_KEY;
+import static org.miron.bt.nodes.BuiltinNodes.VALUE;
+
 import java.util.Optional;
 
 import org.miron.executor.Node;
@@ -14,26 +17,25 @@ import org.miron.executor.Ports;
  * line reported), and only a key with no entry at all is an error, as BT.CPP 4.8 does.
  */
 public class SetBlackboardNode extends Node {
-
     public SetBlackboardNode(NodeInfo info) {
         super(info);
     }
 
     @Override
     protected NodeStatus tick() {
-        if (!ports().has("output_key")) {
-            throw ports().missing("output_key");
+        if (!ports().has(OUTPUT_KEY)) {
+            throw ports().missing(OUTPUT_KEY);
         }
-        Optional<Object> value = ports().get("value");
+        Optional<Object> value = ports().get(VALUE);
         if (value.isEmpty()) {
-            Optional<String> key = Ports.blackboardKey("value", ports().raw("value"));
+            Optional<String> key = Ports.blackboardKey(VALUE, ports().raw(VALUE));
             if (isVersion4() && key.isPresent() && ports().blackboard().contains(key.get())) {
-                context().reportProblem(ports().missingMessage("value"));
+                context().reportProblem(ports().missingMessage(VALUE));
                 return NodeStatus.FAILURE;
             }
-            throw ports().missing("value");
+            throw ports().missing(VALUE);
         }
-        ports().set("output_key", value.get());
+        ports().set(OUTPUT_KEY, value.get());
         return NodeStatus.SUCCESS;
     }
 }
