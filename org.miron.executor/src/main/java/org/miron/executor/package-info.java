@@ -26,9 +26,11 @@
  * the SmartSoft skill interface plugs in.
  *
  * <h2>Version 4</h2>
- * {@link org.miron.executor.TreeBuilder} reads the version from the file; for version 4,
- * {@code V4Nodes} makes the nodes whose behaviour changed (the *V4 classes) or that are new, and
- * gives every node its {@code Conditions} (the _skipIf.._onHalted scripts, run by
+ * {@link org.miron.executor.TreeBuilder} reads the version from the file and makes each built-in
+ * with that version's factory table ({@code BuiltinFactories}: the *V4 classes where BT.CPP 4
+ * changed a node's behaviour, the version-4 nodes), after checking its children and ports against
+ * the catalogue of built-in nodes (org.miron.bt.nodes; {@code BuiltinChecks}); for version 4,
+ * {@code V4Nodes} gives every node its {@code Conditions} (the _skipIf.._onHalted scripts, run by
  * {@link org.miron.executor.Node#executeTick()}). Scripts are parsed once by the BT
  * language ({@code BtScripts}) and compiled by {@code ScriptCompiler} into
  * {@link org.miron.executor.scripting.ScriptCode} closures; {@code ScriptOperators} and
@@ -49,7 +51,9 @@
  *
  * <h2>Design</h2>
  * {@link org.miron.executor.TreeBuilder} turns the EMF model into one runtime
- * {@link org.miron.executor.Node} per model node (one small class per node kind);
+ * {@link org.miron.executor.Node} per model node (one small class per node kind), built-ins by
+ * their catalogue tag rather than their metamodel class, so a node the grammar maps onto a shared
+ * class (AsyncSequence onto Sequence) still gets its own;
  * subtrees are expanded in place, each with its own {@link org.miron.executor.Blackboard}
  * remapped to its parent's. Ports are read at tick time through
  * {@link org.miron.executor.Ports}. Ticks run on one thread; listeners are called on it.

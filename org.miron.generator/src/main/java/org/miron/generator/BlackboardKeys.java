@@ -1,5 +1,9 @@
 package org.miron.generator;
 
+import static org.miron.bt.nodes.BuiltinNodes.AUTOREMAP;
+import static org.miron.bt.nodes.BuiltinNodes.SHARED_BLACKBOARD;
+import static org.miron.bt.nodes.BuiltinNodes.V3_AUTOREMAP;
+
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
@@ -14,6 +18,7 @@ import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
 import org.miron.bt.bt.SubtreeNode;
 import org.miron.bt.bt.SubtreePlus;
+import org.miron.bt.nodes.PortType;
 
 /**
  * Makes the keys the runtime writes into the main tree's blackboard ({vp_sel}, {vp}) visible to
@@ -24,8 +29,6 @@ import org.miron.bt.bt.SubtreePlus;
  * as they are.
  */
 final class BlackboardKeys {
-    private static final Set<String> V4_TRUE = Set.of("true", "True", "TRUE", "1");
-
     private record Read(BehaviorTree tree, String key) {
     }
 
@@ -79,10 +82,14 @@ final class BlackboardKeys {
 
     private boolean passesThrough(SubtreeNode call) {
         if (nodes.isV4()) {
-            String autoremap = call.attribute("_autoremap");
-            return autoremap != null && V4_TRUE.contains(autoremap);
+            return isTrue(call.attribute(AUTOREMAP));
         }
-        return "true".equalsIgnoreCase(call.attribute("__shared_blackboard"))
-                || (call instanceof SubtreePlus && "true".equalsIgnoreCase(call.attribute("__autoremap")));
+        return isTrue(call.attribute(SHARED_BLACKBOARD)) || (call instanceof SubtreePlus && isTrue(call.attribute(V3_AUTOREMAP)));
+    }
+
+    /** A literal BehaviorTree.CPP's convertFromString&lt;bool&gt; reads as true. */
+    private static boolean isTrue(String value) {
+        return value != null && PortType.BOOLEANS.contains(value)
+                && (value.equalsIgnoreCase("true") || value.equals("1"));
     }
 }

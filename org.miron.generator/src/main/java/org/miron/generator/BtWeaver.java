@@ -23,6 +23,7 @@ import org.miron.bt.bt.TreeNode;
 import org.miron.bt.formats.BtFormatConverter;
 import org.miron.bt.formats.Conversion;
 import org.miron.bt.formats.ConversionProblem;
+import org.miron.bt.nodes.BuiltinNodes;
 import org.miron.bt.util.BtFormats;
 import org.miron.dsl.miron.BtBinding;
 import org.miron.dsl.miron.MironModel;
@@ -43,9 +44,6 @@ import org.miron.dsl.util.Imports;
  * adds uses the version's idioms (WovenNodes).
  */
 public class BtWeaver {
-    /** BehaviorTree.CPP 3 registers Switch2..Switch6 only. */
-    public static final int MAX_CASES = 6;
-
     private final List<GenerationError> errors;
     /** Where the woven tree will be written: includes are relative to it. */
     private final URI wovenTree;
@@ -207,7 +205,7 @@ public class BtWeaver {
         // _autoremap="false" only marks a converted SubTreePlus for the way back; a woven tree is not converted back.
         for (SubtreeNode call : EcoreUtil2.eAllOfType(copy, SubtreeNode.class)) {
             call.getAttributes().stream()
-                    .filter(a -> "_autoremap".equals(a.getName()) && "false".equals(a.getValue()))
+                    .filter(a -> BuiltinNodes.AUTOREMAP.equals(a.getName()) && "false".equals(a.getValue()))
                     .findFirst().ifPresent(call.getAttributes()::remove);
         }
     }

@@ -1,5 +1,8 @@
 package org.miron.generator;
 
+import static org.miron.bt.nodes.BuiltinNodes.ID;
+import static org.miron.bt.nodes.BuiltinNodes.NUM_CYCLES;
+
 import java.util.List;
 import java.util.Objects;
 
@@ -36,10 +39,9 @@ final class MonitoringParallel {
             return;
         }
         List<TreeNode> actions = varpoints.stream().map(this::variantAction).toList();
-        Repeat repeat = nodes.factory.createRepeat();
-        repeat.setTag("Repeat");
+        Repeat repeat = nodes.leaf(nodes.factory.createRepeat(), "Repeat");
         repeat.getAttributes().add(nodes.attribute("name", "monitoring_repeat"));
-        repeat.getAttributes().add(nodes.attribute("num_cycles", "-1"));
+        repeat.getAttributes().add(nodes.attribute(nodes.port("Repeat", NUM_CYCLES), "-1")); // forever
         if (actions.size() == 1) {
             repeat.setNode(actions.get(0));
         } else {
@@ -58,15 +60,14 @@ final class MonitoringParallel {
 
     private TreeNode variantAction(SampledVariationPoint vp) {
         Action action = nodes.leaf(nodes.factory.createAction(), "Action");
-        action.getAttributes().add(nodes.attribute("ID", "VariantAction"));
+        action.getAttributes().add(nodes.attribute(nodes.port("Action", ID), "VariantAction"));
         action.getAttributes().add(nodes.attribute("varpoint", vp.name));
         action.getAttributes().add(nodes.attribute("value", "{" + vp.selection() + "}"));
         return action;
     }
 
     private Parallel parallel(String name, int successes) {
-        Parallel parallel = nodes.factory.createParallel();
-        parallel.setTag("Parallel");
+        Parallel parallel = nodes.leaf(nodes.factory.createParallel(), "Parallel");
         parallel.getAttributes().add(nodes.attribute("name", name));
         parallel.getAttributes().add(nodes.attribute(nodes.successCount(), String.valueOf(successes)));
         parallel.getAttributes().add(nodes.attribute(nodes.failureCount(), "1"));

@@ -1,5 +1,8 @@
 package org.miron.generator;
 
+import static org.miron.bt.nodes.BuiltinNodes.CASE_PREFIX;
+import static org.miron.bt.nodes.BuiltinNodes.VARIABLE;
+
 import java.util.List;
 
 import org.eclipse.emf.ecore.EObject;
@@ -23,7 +26,8 @@ import org.miron.dsl.miron.InsertionType;
  *  - `before`/`after` insert the Switch next to the target in its parent; where the parent takes
  *    exactly one child or counts its children (a tree, a decorator, a Switch) target and Switch
  *    are wrapped in a Sequence instead, which keeps the tree loadable and the cases aligned.
- *  - BehaviorTree.CPP 3 stops at Switch6, so more cases nest Switches through the default child.
+ *  - BehaviorTree.CPP stops at Switch6 (the largest SwitchN of the catalogue), so more cases nest
+ *    Switches through the default child.
  */
 final class VariantSwitches {
     private final WovenNodes nodes;
@@ -59,8 +63,7 @@ final class VariantSwitches {
             int index = children.indexOf(target);
             children.add(before ? index : index + 1, choice);
         } else {
-            Sequence sequence = nodes.factory.createSequence();
-            sequence.setTag("Sequence");
+            Sequence sequence = nodes.leaf(nodes.factory.createSequence(), "Sequence");
             EcoreUtil.replace(target, sequence);
             if (before) {
                 sequence.getNodes().add(choice);
@@ -75,9 +78,10 @@ final class VariantSwitches {
     /** A Switch over the cases whose last child is fallback; nested when there are more than six. */
     private TreeNode switchFor(SampledVariationPoint vp, List<BehaviorTreeLiteral> cases, List<Attribute> wiring,
             TreeNode fallback) {
-        if (cases.size() > BtWeaver.MAX_CASES) {
+        int max = nodes.maxSwitchCases();
+        if (cases.size() > max) {
             // Leave at least two cases to the inner Switch: there is no Switch1.
-            int here = cases.size() - BtWeaver.MAX_CASES >= 2 ? BtWeaver.MAX_CASES : cases.size() - 2;
+            int here = cases.size() - max >= 2 ? max : cases.size() - 2;
             return switchNode(vp, cases.subList(0, here), wiring,
                     switchFor(vp, cases.subList(here, cases.size()), wiring, fallback));
         }
@@ -89,14 +93,14 @@ final class VariantSwitches {
         // A single case still needs a Switch2: its second case repeats the first, so it is never
         // chosen (the first matching case wins), and its child is an AlwaysFailure.
         boolean padded = cases.size() == 1;
-        Switch node = nodes.factory.createSwitch();
-        node.setTag("Switch" + (padded ? 2 : cases.size()));
-        node.getAttributes().add(nodes.attribute("variable", "{" + vp.selection() + "}"));
+        String tag = "Switch" + (padded ? 2 : cases.size());
+        Switch node = nodes.leaf(nodes.factory.createSwitch(), tag);
+        node.getAttributes().add(nodes.attribute(nodes.port(tag, VARIABLE), "{" + vp.selection() + "}"));
         for (int i = 0; i < cases.size(); i++) {
-            node.getAttributes().add(nodes.attribute("case_" + (i + 1), cases.get(i).getName()));
+            node.getAttributes().add(nodes.attribute(nodes.port(tag, CASE_PREFIX + (i + 1)), cases.get(i).getName()));
         }
         if (padded) {
-            node.getAttributes().add(nodes.attribute("case_2", cases.get(0).getName()));
+            node.getAttributes().add(nodes.attribute(nodes.port(tag, CASE_PREFIX + 2), cases.get(0).getName()));
         }
         for (BehaviorTreeLiteral c : cases) {
             SubtreeNode call = nodes.subtree(c.getReference());

@@ -1,5 +1,7 @@
 package org.miron.executor.actions;
 
+import static org.miron.bt.nodes.BuiltinNodes.ENTRY;
+
 import org.miron.executor.BtBuildException;
 import org.miron.executor.Node;
 import org.miron.executor.NodeInfo;
@@ -22,11 +24,11 @@ public final class EntryUpdatedNode extends Node {
 
     /** The key an entry port names: {key} or the plain key. */
     public static String entryKey(NodeInfo info) {
-        String raw = info.ports().raw("entry");
+        String raw = info.ports().raw(ENTRY);
         if (raw == null || raw.isEmpty()) {
             throw new BtBuildException(info.path() + ": missing parameter entry");
         }
-        return Ports.blackboardKey("entry", raw).orElse(raw);
+        return Ports.blackboardKey(ENTRY, raw).orElse(raw);
     }
 
     @Override

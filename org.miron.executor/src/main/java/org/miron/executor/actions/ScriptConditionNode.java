@@ -1,5 +1,7 @@
 package org.miron.executor.actions;
 
+import static org.miron.bt.nodes.BuiltinNodes.CODE;
+
 import java.util.Map;
 import org.miron.executor.BtRuntimeException;
 import org.miron.executor.Conditions;
@@ -23,7 +25,7 @@ public final class ScriptConditionNode extends Node {
 
     @Override
     protected NodeStatus tick() {
-        return isTrue(this, "code", Conditions.runScript(code, this, "code", enums)) ? NodeStatus.SUCCESS : NodeStatus.FAILURE;
+        return isTrue(this, CODE, Conditions.runScript(code, this, CODE, enums)) ? NodeStatus.SUCCESS : NodeStatus.FAILURE;
     }
 
     /** A script's value as a condition, a value that is none being the node's error. */

@@ -1,5 +1,7 @@
 package org.miron.executor.actions;
 
+import static org.miron.bt.nodes.BuiltinNodes.CODE;
+
 import java.util.Map;
 import org.miron.executor.Conditions;
 import org.miron.executor.Node;
@@ -20,7 +22,7 @@ public final class ScriptNode extends Node {
 
     @Override
     protected NodeStatus tick() {
-        Conditions.runScript(code, this, "code", enums);
+        Conditions.runScript(code, this, CODE, enums);
         return NodeStatus.SUCCESS;
     }
 }

@@ -1,5 +1,7 @@
 package org.miron.executor.actions;
 
+import static org.miron.bt.nodes.BuiltinNodes.MSEC;
+
 import org.miron.executor.Node;
 import org.miron.executor.NodeInfo;
 import org.miron.executor.NodeStatus;
@@ -11,8 +13,6 @@ import org.miron.executor.RunTimer;
  * timer thread), so a run is deterministic.
  */
 public final class SleepNode extends Node {
-    public static final String MSEC = "msec";
-
     private final RunTimer timer = new RunTimer();
     private int msec;
 

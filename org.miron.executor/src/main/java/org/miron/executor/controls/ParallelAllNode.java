@@ -1,5 +1,7 @@
 package org.miron.executor.controls;
 
+import static org.miron.bt.nodes.BuiltinNodes.MAX_FAILURES;
+
 import java.util.Arrays;
 import java.util.List;
 import org.miron.executor.BtRuntimeException;
@@ -14,8 +16,6 @@ import org.miron.executor.NodeStatus;
  * number of children), else SUCCESS. All children skipped: SKIPPED.
  */
 public final class ParallelAllNode extends ControlNode {
-    public static final String MAX_FAILURES = "max_failures";
-
     private final boolean[] finished;
     private int failures;
 

@@ -1,5 +1,8 @@
 package org.miron.executor.controls;
 
+import static org.miron.bt.nodes.BuiltinNodes.FAILURE_THRESHOLD;
+import static org.miron.bt.nodes.BuiltinNodes.SUCCESS_THRESHOLD;
+
 import java.util.List;
 import org.miron.executor.BtRuntimeException;
 import org.miron.executor.ControlNode;
@@ -14,9 +17,6 @@ import org.miron.executor.NodeStatus;
  * A negative threshold counts from the number of children: -1 means all of them, -2 all but one.
  */
 public class ParallelNode extends ControlNode {
-    public static final String SUCCESS_THRESHOLD = "success_threshold";
-    public static final String FAILURE_THRESHOLD = "failure_threshold";
-
     private final boolean[] finished;
     private int successes;
     private int failures;

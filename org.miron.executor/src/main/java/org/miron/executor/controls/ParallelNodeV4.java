@@ -1,5 +1,8 @@
 package org.miron.executor.controls;
 
+import static org.miron.bt.nodes.BuiltinNodes.FAILURE_COUNT;
+import static org.miron.bt.nodes.BuiltinNodes.SUCCESS_COUNT;
+
 import java.util.Arrays;
 import java.util.List;
 import org.miron.executor.BtRuntimeException;
@@ -17,9 +20,6 @@ import org.miron.executor.NodeStatus;
  * A count larger than the number of children is an error. All children skipped: SKIPPED.
  */
 public final class ParallelNodeV4 extends ControlNode {
-    public static final String SUCCESS_COUNT = "success_count";
-    public static final String FAILURE_COUNT = "failure_count";
-
     private final boolean[] finished;
     private int successes;
     private int failures;

@@ -1,5 +1,8 @@
 package org.miron.executor.controls;
 
+import static org.miron.bt.nodes.BuiltinNodes.CASE_PREFIX;
+import static org.miron.bt.nodes.BuiltinNodes.VARIABLE;
+
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -58,10 +61,10 @@ public class SwitchNode extends ControlNode {
 
     /** Index of the child the variable selects now. */
     public int selectedChild() {
-        Optional<String> variable = ports().getString("variable");
+        Optional<String> variable = ports().getString(VARIABLE);
         if (variable.isPresent()) {
             for (int i = 0; i < cases; i++) {
-                Optional<String> value = ports().getString("case_" + (i + 1));
+                Optional<String> value = ports().getString(CASE_PREFIX + (i + 1));
                 if (value.isPresent() && matches(variable.get(), value.get())) {
                     return i;
                 }

@@ -1,5 +1,9 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.RETURN_ON_MISMATCH;
+import static org.miron.bt.nodes.BuiltinNodes.VALUE_A;
+import static org.miron.bt.nodes.BuiltinNodes.VALUE_B;
+
 import java.util.Objects;
 import java.util.Optional;
 import org.miron.executor.Conversions;
@@ -14,7 +18,6 @@ import org.miron.executor.NodeStatus;
  * running child and returns return_on_mismatch.
  */
 public class BlackboardCheckNode extends DecoratorNode {
-
     /** How the two values are read and compared. */
     public enum Kind {
         INT, DOUBLE, STRING
@@ -30,14 +33,14 @@ public class BlackboardCheckNode extends DecoratorNode {
     @Override
     protected NodeStatus tick() {
         setStatus(NodeStatus.RUNNING);
-        Optional<Object> a = read("value_A");
-        Optional<Object> b = read("value_B");
+        Optional<Object> a = read(VALUE_A);
+        Optional<Object> b = read(VALUE_B);
         if (a.isPresent() && b.isPresent() && Objects.equals(a.get(), b.get())) {
             return child.executeTick();
         }
         resetChild();
         // Empty (as Groot writes unset ports) falls back to FAILURE, as in BehaviorTree.CPP 3.
-        return ports().get("return_on_mismatch").filter(v -> !String.valueOf(v).isBlank())
+        return ports().get(RETURN_ON_MISMATCH).filter(v -> !String.valueOf(v).isBlank())
                 .map(Conversions::toStatus).orElse(NodeStatus.FAILURE);
     }
 

@@ -1,5 +1,7 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.DELAY_MSEC;
+
 import org.miron.executor.BtRuntimeException;
 import org.miron.executor.DecoratorNode;
 import org.miron.executor.Node;
@@ -14,8 +16,6 @@ import org.miron.executor.RunTimer;
  * the clock is read at tick time (BT.CPP uses a timer thread), so a run is deterministic.
  */
 public final class DelayNode extends DecoratorNode {
-    public static final String DELAY_MSEC = "delay_msec";
-
     private final RunTimer timer = new RunTimer();
     private int delayMsec;
 

@@ -1,5 +1,8 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.NUM_ATTEMPTS;
+import static org.miron.bt.nodes.BuiltinNodes.NUM_CYCLES;
+
 import org.miron.executor.BtRuntimeException;
 import org.miron.executor.DecoratorNode;
 import org.miron.executor.Node;
@@ -17,9 +20,6 @@ import org.miron.executor.TreeContext;
  * succeeds at once cannot hang the tree.
  */
 public final class LoopNode extends DecoratorNode {
-    public static final String NUM_CYCLES = "num_cycles";
-    public static final String NUM_ATTEMPTS = "num_attempts";
-
     private final NodeStatus loopOn;
     private final String countPort;
     private int loops;

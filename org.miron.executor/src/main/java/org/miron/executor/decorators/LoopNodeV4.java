@@ -1,5 +1,8 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.NUM_ATTEMPTS;
+import static org.miron.bt.nodes.BuiltinNodes.NUM_CYCLES;
+
 import org.miron.executor.DecoratorNode;
 import org.miron.executor.Node;
 import org.miron.executor.NodeInfo;
@@ -25,11 +28,11 @@ public final class LoopNodeV4 extends DecoratorNode {
     }
 
     public static LoopNodeV4 repeat(NodeInfo info, Node child) {
-        return new LoopNodeV4(info, child, NodeStatus.SUCCESS, LoopNode.NUM_CYCLES);
+        return new LoopNodeV4(info, child, NodeStatus.SUCCESS, NUM_CYCLES);
     }
 
     public static LoopNodeV4 retry(NodeInfo info, Node child) {
-        return new LoopNodeV4(info, child, NodeStatus.FAILURE, LoopNode.NUM_ATTEMPTS);
+        return new LoopNodeV4(info, child, NodeStatus.FAILURE, NUM_ATTEMPTS);
     }
 
     @Override

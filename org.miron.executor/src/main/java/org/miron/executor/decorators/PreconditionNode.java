@@ -1,5 +1,8 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.ELSE;
+import static org.miron.bt.nodes.BuiltinNodes.IF;
+
 import java.util.Map;
 import org.miron.executor.Conditions;
 import org.miron.executor.Conversions;
@@ -28,9 +31,9 @@ public final class PreconditionNode extends DecoratorNode {
 
     @Override
     protected NodeStatus tick() {
-        NodeStatus otherwise = ports().get("else").map(Conversions::toStatusOrSkipped).orElse(NodeStatus.FAILURE);
+        NodeStatus otherwise = ports().get(ELSE).map(Conversions::toStatusOrSkipped).orElse(NodeStatus.FAILURE);
         if (!childRunning) {
-            childRunning = ScriptConditionNode.isTrue(this, "if", Conditions.runScript(condition, this, "if", enums));
+            childRunning = ScriptConditionNode.isTrue(this, IF, Conditions.runScript(condition, this, IF, enums));
         }
         if (!childRunning) {
             return otherwise;

@@ -1,5 +1,9 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.IF_EMPTY;
+import static org.miron.bt.nodes.BuiltinNodes.QUEUE;
+import static org.miron.bt.nodes.BuiltinNodes.VALUE;
+
 import java.util.ArrayDeque;
 import java.util.Collection;
 import java.util.Deque;
@@ -49,8 +53,8 @@ public final class QueueLoopNode extends DecoratorNode {
 
     @Override
     protected NodeStatus tick() {
-        String raw = ports().raw("queue");
-        boolean literal = raw == null || Ports.blackboardKey("queue", raw).isEmpty();
+        String raw = ports().raw(QUEUE);
+        boolean literal = raw == null || Ports.blackboardKey(QUEUE, raw).isEmpty();
         if (status() == NodeStatus.IDLE) {
             childRunning = false;
             if (literal) {
@@ -63,12 +67,12 @@ public final class QueueLoopNode extends DecoratorNode {
                 queue = fromBlackboard(raw);
             }
             if (queue != null && !queue.isEmpty()) {
-                ports().set("value", queue.pollFirst());
+                ports().set(VALUE, queue.pollFirst());
                 popped = true;
             }
         }
         if (!popped && !childRunning) {
-            return ports().get("if_empty").map(Conversions::toStatusOrSkipped).orElse(NodeStatus.SUCCESS);
+            return ports().get(IF_EMPTY).map(Conversions::toStatusOrSkipped).orElse(NodeStatus.SUCCESS);
         }
         if (status() == NodeStatus.IDLE) {
             setStatus(NodeStatus.RUNNING);
@@ -83,7 +87,7 @@ public final class QueueLoopNode extends DecoratorNode {
 
     @SuppressWarnings("unchecked")
     private Deque<Object> fromBlackboard(String raw) {
-        String key = Ports.blackboardKey("queue", raw).orElseThrow();
+        String key = Ports.blackboardKey(QUEUE, raw).orElseThrow();
         Object value = ports().blackboard().get(key).orElse(null);
         if (value == null) {
             return null;

@@ -1,5 +1,7 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.THEN_SKIP;
+
 import org.miron.executor.DecoratorNode;
 import org.miron.executor.Node;
 import org.miron.executor.NodeInfo;
@@ -19,7 +21,7 @@ public final class RunOnceNode extends DecoratorNode {
 
     @Override
     protected NodeStatus tick() {
-        boolean skip = ports().getBoolean("then_skip").orElse(true);
+        boolean skip = ports().getBoolean(THEN_SKIP).orElse(true);
         if (done) {
             return skip ? NodeStatus.SKIPPED : result;
         }

@@ -1,5 +1,7 @@
 package org.miron.executor.decorators;
 
+import static org.miron.bt.nodes.BuiltinNodes.MSEC;
+
 import org.miron.executor.DecoratorNode;
 import org.miron.executor.Node;
 import org.miron.executor.NodeInfo;
@@ -12,8 +14,6 @@ import org.miron.executor.RunTimer;
  * time (not by a timer thread as in BehaviorTree.CPP), so the outcome is deterministic.
  */
 public class TimeoutNode extends DecoratorNode {
-    public static final String MSEC = "msec";
-
     private final RunTimer timer = new RunTimer();
 
     public TimeoutNode(NodeInfo info, Node child) {

@@ -4,6 +4,9 @@ package org.miron.runtime.bus;
 public final class Topics {
     public static final String ESTIMATE = "roqme.estimate";
     public static final String CONTEXT = "roqme.context";
+    /** The RoQME provider's fired observations and its status (docs/wire-formats.md). */
+    public static final String OBSERVATION = "roqme.observation";
+    public static final String ROQME_STATUS = "roqme.status";
     public static final String VARIANT_PREFIX = "miron.variant.";
     public static final String BLACKBOARD_PREFIX = "miron.blackboard.";
     public static final String OVERRIDE_PREFIX = "miron.override.";

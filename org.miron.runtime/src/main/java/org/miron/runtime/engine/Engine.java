@@ -91,6 +91,9 @@ public final class Engine implements AutoCloseable {
     }
 
     private void onMessage(String topic, byte[] body) {
+        if (topic.equals(Topics.OBSERVATION) || topic.equals(Topics.ROQME_STATUS)) {
+            return; // the RoQME provider's own outputs, not inputs
+        }
         try {
             decoder.apply(topic, body);
         } catch (BadInputException e) {
