@@ -7,7 +7,6 @@ import static org.junit.Assert.assertTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Stream;
@@ -26,10 +25,7 @@ public class ExamplesGenerationTest {
     public TemporaryFolder temp = new TemporaryFolder();
 
     private static List<Path> examples() throws IOException {
-        List<Path> models = new ArrayList<>();
-        try (Stream<Path> files = Files.walk(Toolchain.ROOT.resolve("examples"), 2)) {
-            files.filter(f -> f.toString().endsWith(".miron")).sorted().forEach(models::add);
-        }
+        List<Path> models = Toolchain.exampleModels();
         assertFalse("no examples/*/*.miron", models.isEmpty());
         return models;
     }

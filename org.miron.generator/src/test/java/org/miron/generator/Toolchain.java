@@ -1,9 +1,13 @@
 package org.miron.generator;
 
 import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.generator.standalone.BatchGeneration;
@@ -60,6 +64,22 @@ final class Toolchain {
 
     String messages() {
         return messages.toString();
+    }
+
+    /** The examples' models (examples/NAME/*.miron), sorted. */
+    static List<Path> exampleModels() throws IOException {
+        try (Stream<Path> files = Files.walk(ROOT.resolve("examples"), 2)) {
+            return files.filter(f -> f.toString().endsWith(".miron")).sorted().collect(Collectors.toList());
+        }
+    }
+
+    /** The examples' models, then those of src/test/resources/weaving (copied into dir), each sorted. */
+    static List<Path> exampleAndWeavingModels(Path dir) throws IOException {
+        List<Path> models = new ArrayList<>(exampleModels());
+        try (Stream<Path> files = Files.list(copyResources("weaving", dir))) {
+            files.filter(f -> f.toString().endsWith(".miron")).sorted().forEach(models::add);
+        }
+        return models;
     }
 
     /** Copies a folder of test resources (src/test/resources/NAME) to dir. */

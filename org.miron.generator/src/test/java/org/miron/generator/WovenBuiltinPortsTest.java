@@ -5,14 +5,11 @@ import static org.junit.Assert.assertTrue;
 
 import java.io.File;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
-import java.util.stream.Stream;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.junit.Rule;
@@ -90,15 +87,7 @@ public class WovenBuiltinPortsTest {
     }
 
     private List<Path> models() throws IOException {
-        List<Path> models = new ArrayList<>();
-        try (Stream<Path> files = Files.walk(Toolchain.ROOT.resolve("examples"), 2)) {
-            files.filter(f -> f.toString().endsWith(".miron")).sorted().forEach(models::add);
-        }
-        Path weaving = Toolchain.copyResources("weaving", temp.newFolder("weaving").toPath());
-        try (Stream<Path> files = Files.list(weaving)) {
-            files.filter(f -> f.toString().endsWith(".miron")).sorted().forEach(models::add);
-        }
-        return models;
+        return Toolchain.exampleAndWeavingModels(temp.newFolder("weaving").toPath());
     }
 
     private static String base(Path model) {

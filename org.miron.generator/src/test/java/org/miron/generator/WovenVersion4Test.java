@@ -10,7 +10,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.stream.Stream;
 
 import org.junit.Rule;
 import org.junit.Test;
@@ -27,15 +26,7 @@ public class WovenVersion4Test {
     public TemporaryFolder temp = new TemporaryFolder();
 
     private List<Path> models() throws IOException {
-        List<Path> models = new ArrayList<>();
-        try (Stream<Path> files = Files.walk(Toolchain.ROOT.resolve("examples"), 2)) {
-            files.filter(f -> f.toString().endsWith(".miron")).sorted().forEach(models::add);
-        }
-        Path weaving = Toolchain.copyResources("weaving", temp.newFolder("weaving").toPath());
-        try (Stream<Path> files = Files.list(weaving)) {
-            files.filter(f -> f.toString().endsWith(".miron")).sorted().forEach(models::add);
-        }
-        return models;
+        return Toolchain.exampleAndWeavingModels(temp.newFolder("weaving").toPath());
     }
 
     private static int count(String text, String part) {
