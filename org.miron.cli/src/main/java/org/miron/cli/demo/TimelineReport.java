@@ -14,7 +14,8 @@ import org.miron.runtime.bus.Topics;
 
 /**
  * A self-contained HTML page (inline SVG, no scripts) that shows why the robot adapted: the QoS
- * metrics, the contexts and the engine's decisions on one time axis, and a table of every
+ * metrics (the provider's estimate curves, with a mark where an observation fired), the fired
+ * observations, the contexts and the engine's decisions on one time axis, and a table of every
  * adaptation with the inputs the engine saw when it made it.
  */
 public final class TimelineReport {
@@ -35,6 +36,9 @@ public final class TimelineReport {
     private final Map<String, List<Point>> decisions = new LinkedHashMap<>();
     private final List<String[]> adaptations = new ArrayList<>();
     private final List<Long> problems = new ArrayList<>();
+    /** Fired observations by name: when, and what each did ("undermines safety (HIGH)"). */
+    private final Map<String, List<Long>> observations = new LinkedHashMap<>();
+    private final Map<String, String> observationEffects = new LinkedHashMap<>();
 
     public TimelineReport(String title, List<BusRecorder.Event> events, long end) {
         this.title = title;
@@ -44,6 +48,10 @@ public final class TimelineReport {
             JsonNode body = e.body();
             if (e.topic().equals(Topics.ESTIMATE)) {
                 add(metrics, body.path("name").asText(), e.at(), body.path("value"));
+            } else if (e.topic().equals(Topics.OBSERVATION)) {
+                String name = body.path("name").asText();
+                observations.computeIfAbsent(name, k -> new ArrayList<>()).add(e.at());
+                observationEffects.computeIfAbsent(name, k -> effects(body.path("actions")));
             } else if (e.topic().equals(Topics.CONTEXT)) {
                 add(contexts, body.path("name").asText(), e.at(), body.path("value"));
             } else if (e.topic().equals(Topics.DECISION)) {
@@ -65,6 +73,16 @@ public final class TimelineReport {
         if (!name.isEmpty() && !value.isMissingNode()) {
             series.computeIfAbsent(name, k -> new ArrayList<>()).add(new Point(at, value));
         }
+    }
+
+    private static String effects(JsonNode actions) {
+        List<String> parts = new ArrayList<>();
+        for (JsonNode a : actions) {
+            String target = a.path(a.has("belief") ? "belief" : a.has("var") ? "var" : "timer").asText();
+            String strength = a.path("strength").asText("");
+            parts.add(a.path("kind").asText() + " " + target + (strength.isEmpty() ? "" : " (" + strength + ")"));
+        }
+        return String.join(", ", parts);
     }
 
     private static String inputsOf(JsonNode inputs) {
@@ -92,7 +110,11 @@ public final class TimelineReport {
                 .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
                 .append(" adaptations in ").append(seconds(end)).append(" s")
                 .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");
-        out.append("<h2>QoS metrics</h2>\n").append(lineChart(metrics, 0, 1));
+        out.append("<h2>QoS metrics</h2>\n<p>The estimates the engine received; a dotted line marks a fired "
+                + "observation.</p>\n").append(lineChart(metrics, 0, 1));
+        if (!observations.isEmpty()) {
+            out.append("<h2>Observations fired</h2>\n").append(observationLanes());
+        }
         if (!contexts.isEmpty()) {
             out.append("<h2>Contexts</h2>\n").append(lanes(contexts));
         }
@@ -134,7 +156,36 @@ public final class TimelineReport {
                     .append("\" stroke-width=\"2\"/>\n");
             svg.append(text(10, 20 + 16 * (color - 1), "start", s.getKey(), stroke));
         }
+        observationMarks(svg, height);
         return problemMarks(svg, height).append("</svg>\n").toString();
+    }
+
+    /** A dotted grey line where any observation fired, under the curves' legend. */
+    private void observationMarks(StringBuilder svg, int height) {
+        observations.values().stream().flatMap(List::stream).distinct().forEach(at -> svg.append(String.format(Locale.ROOT,
+                "<line x1=\"%.1f\" x2=\"%.1f\" y1=\"10\" y2=\"%d\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n",
+                x(at), x(at), height)));
+    }
+
+    /** One lane per observation: a dot each time it fired, and what it does. */
+    private String observationLanes() {
+        int lane = 22;
+        StringBuilder svg = svgStart(observations.size() * lane + 30);
+        int row = 0;
+        for (Map.Entry<String, List<Long>> o : observations.entrySet()) {
+            int middle = row * lane + lane / 2 + 2;
+            String color = COLORS[row % COLORS.length];
+            svg.append(text(LEFT - 8, middle + 4, "end", o.getKey(), color));
+            for (long at : o.getValue()) {
+                svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%d\" r=\"4\" fill=\"%s\"><title>%s</title></circle>\n",
+                        x(at), middle, color, escape(o.getKey() + " at " + seconds(at) + " s: " + observationEffects.get(o.getKey()))));
+            }
+            long last = o.getValue().get(o.getValue().size() - 1);
+            svg.append(text(Math.min(x(last) + 8, WIDTH - 260), middle + 4, "start", observationEffects.get(o.getKey()), "#666"));
+            row++;
+        }
+        axes(svg, observations.size() * lane);
+        return svg.append("</svg>\n").toString();
     }
 
     /** One lane per series: the value written in a band that lasts until the next value. */

@@ -39,7 +39,8 @@ public final class LiveProvider implements AutoCloseable {
     private final CompiledModel model;
     private final long periodMs;
     private final long statusIntervalMs;
-    private final LongSupplier clock = System::currentTimeMillis;
+    private LongSupplier clock = System::currentTimeMillis;
+    private double timeScale = 1.0;
     private final BlockingQueue<Arrival> inbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
     private final ProviderStatus status = new ProviderStatus();
     private final ContextDecoder decoder;
@@ -79,6 +80,21 @@ public final class LiveProvider implements AutoCloseable {
             LOG.warning("roqme: " + file + " holds the evidence of model " + saved.model() + ", not "
                     + model.model().model() + ": its beliefs are matched by id");
         }
+        return this;
+    }
+
+    /**
+     * Runs the provider on a scaled clock, for a demo that plays its scenario faster (0.4: every
+     * model second lasts 0.4 s): the period, survivals, windows and timers stay in model time, so
+     * the estimates follow the same curve as at scale 1. Call before {@link #start}.
+     */
+    public LiveProvider timeScale(double scale) {
+        if (!(scale > 0) || Double.isInfinite(scale)) {
+            throw new IllegalArgumentException("the time scale must be a positive number, got " + scale);
+        }
+        long origin = System.currentTimeMillis();
+        this.timeScale = scale;
+        this.clock = () -> origin + (long) ((System.currentTimeMillis() - origin) / scale);
         return this;
     }
 
@@ -133,7 +149,7 @@ public final class LiveProvider implements AutoCloseable {
     private void round(Provider p) throws InterruptedException {
         long now = clock.getAsLong();
         long wait = Math.min(p.nextTickTime(), Math.min(p.nextDue(), nextStatus)) - now;
-        Arrival a = wait > 0 ? inbox.poll(wait, TimeUnit.MILLISECONDS) : inbox.poll();
+        Arrival a = wait > 0 ? inbox.poll(Math.max(1, (long) Math.ceil(wait * timeScale)), TimeUnit.MILLISECONDS) : inbox.poll();
         while (a != null) {
             last = Math.max(last, a.time()); // the provider's clock never goes back
             input(p, a, last);
