@@ -95,8 +95,9 @@ final class RoqmeNarration {
         }
         Double before = told.get(property);
         if (!causes.isEmpty()) {
-            out.say(at, "RoQME ", String.join("; ", causes) + " → " + property + " "
-                    + (before == null ? "" : fmt(before) + " → ") + fmt(value));
+            boolean same = before != null && fmt(before).equals(fmt(value));
+            out.say(at, "RoQME ", String.join("; ", causes) + (same ? " (" + property + " stays " + fmt(value) + ")"
+                    : " → " + property + " " + (before == null ? "" : fmt(before) + " → ") + fmt(value)));
         } else if (before == null) {
             out.say(at, "RoQME ", property + " = " + fmt(value));
         } else if (Math.abs(value - before) >= NOTICEABLE) {

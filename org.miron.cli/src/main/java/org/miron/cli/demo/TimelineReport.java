@@ -89,7 +89,8 @@ public final class TimelineReport {
         List<String> parts = new ArrayList<>();
         inputs.fields().forEachRemaining(f -> {
             if (!f.getKey().endsWith("_known") && !f.getKey().contains("_input") && !f.getKey().endsWith("_current")) {
-                parts.add(f.getKey() + " = " + f.getValue().asText());
+                JsonNode v = f.getValue();
+                parts.add(f.getKey() + " = " + (v.isFloatingPointNumber() ? fmt(v.asDouble()) : v.asText()));
             }
         });
         return String.join(", ", parts);
@@ -113,7 +114,12 @@ public final class TimelineReport {
         out.append("<h2>QoS metrics</h2>\n<p>The estimates the engine received; a dotted line marks a fired "
                 + "observation.</p>\n").append(lineChart(metrics, 0, 1));
         if (!observations.isEmpty()) {
-            out.append("<h2>Observations fired</h2>\n").append(observationLanes());
+            out.append("<h2>Observations fired</h2>\n").append(observationLanes())
+                    .append("<table><tr><th>observation</th><th>what it does</th><th>fired at (s)</th></tr>\n");
+            observations.forEach((name, times) -> out.append("<tr><td>").append(escape(name)).append("</td><td>")
+                    .append(escape(observationEffects.get(name))).append("</td><td>")
+                    .append(String.join(", ", times.stream().map(TimelineReport::seconds).toList())).append("</td></tr>\n"));
+            out.append("</table>\n");
         }
         if (!contexts.isEmpty()) {
             out.append("<h2>Contexts</h2>\n").append(lanes(contexts));
@@ -180,8 +186,6 @@ public final class TimelineReport {
                 svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%d\" r=\"4\" fill=\"%s\"><title>%s</title></circle>\n",
                         x(at), middle, color, escape(o.getKey() + " at " + seconds(at) + " s: " + observationEffects.get(o.getKey()))));
             }
-            long last = o.getValue().get(o.getValue().size() - 1);
-            svg.append(text(Math.min(x(last) + 8, WIDTH - 260), middle + 4, "start", observationEffects.get(o.getKey()), "#666"));
             row++;
         }
         axes(svg, observations.size() * lane);
