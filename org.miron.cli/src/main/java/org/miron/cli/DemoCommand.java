@@ -37,7 +37,7 @@ import picocli.CommandLine;
  * it in one JVM (broker, RoQME provider, engine, mock skill interface, BT executor, scenario player
  * publishing contexts), telling each fired observation and adaptation as it happens and writing a
  * timeline report at the end. Its inputs come from demo/ next to the model; a scenario that does
- * not fit the model is refused (docs/demo.md).
+ * not fit the model is refused (README.md, docs/wire-formats.md).
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = "Runs the MIRoN loop on a model in one process: a scenario publishes the robot's contexts, the "

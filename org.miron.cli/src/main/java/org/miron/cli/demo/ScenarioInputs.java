@@ -47,7 +47,7 @@ public final class ScenarioInputs {
             Set<String> known = estimate ? metrics : contexts;
             if (!known.contains(key(name, namespace)) && !(namespace.isEmpty() && knownByName(known, name))) {
                 problems.add(scenarioName + ": " + name + (namespace.isEmpty() ? "" : " (" + namespace + ")")
-                        + " is not " + (estimate ? "a metric" : "an input") + " of " + modelName);
+                        + " is not an input of " + modelName);
             }
         }
         return new ArrayList<>(problems);
