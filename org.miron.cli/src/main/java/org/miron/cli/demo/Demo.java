@@ -104,6 +104,9 @@ public final class Demo {
                     out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
                             + " from " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
                     provider.start();
+                    if (!provider.awaitSubscribed(10_000)) {
+                        throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");
+                    }
                 }
                 engine.start();
                 Thread robot = new Thread(() -> {

@@ -39,6 +39,8 @@ public final class TimelineReport {
     /** Fired observations by name: when, and what each did ("undermines safety (HIGH)"). */
     private final Map<String, List<Long>> observations = new LinkedHashMap<>();
     private final Map<String, String> observationEffects = new LinkedHashMap<>();
+    /** Event contexts (eventtype) by name: when each occurred. */
+    private final Map<String, List<Long>> eventContexts = new LinkedHashMap<>();
 
     public TimelineReport(String title, List<BusRecorder.Event> events, long end) {
         this.title = title;
@@ -52,6 +54,8 @@ public final class TimelineReport {
                 String name = body.path("name").asText();
                 observations.computeIfAbsent(name, k -> new ArrayList<>()).add(e.at());
                 observationEffects.computeIfAbsent(name, k -> effects(body.path("actions")));
+            } else if (e.topic().equals(Topics.CONTEXT) && body.path("type").asText().equals("event")) {
+                eventContexts.computeIfAbsent(body.path("name").asText(), k -> new ArrayList<>()).add(e.at());
             } else if (e.topic().equals(Topics.CONTEXT)) {
                 add(contexts, body.path("name").asText(), e.at(), body.path("value"));
             } else if (e.topic().equals(Topics.DECISION)) {
@@ -114,15 +118,18 @@ public final class TimelineReport {
         out.append("<h2>QoS metrics</h2>\n<p>The estimates the engine received; a dotted line marks a fired "
                 + "observation.</p>\n").append(lineChart(metrics, 0, 1));
         if (!observations.isEmpty()) {
-            out.append("<h2>Observations fired</h2>\n").append(observationLanes())
+            out.append("<h2>Observations fired</h2>\n").append(dotLanes(observations, name -> name + ": " + observationEffects.get(name)))
                     .append("<table><tr><th>observation</th><th>what it does</th><th>fired at (s)</th></tr>\n");
             observations.forEach((name, times) -> out.append("<tr><td>").append(escape(name)).append("</td><td>")
                     .append(escape(observationEffects.get(name))).append("</td><td>")
                     .append(String.join(", ", times.stream().map(TimelineReport::seconds).toList())).append("</td></tr>\n"));
             out.append("</table>\n");
         }
-        if (!contexts.isEmpty()) {
+        if (!contexts.isEmpty() || !eventContexts.isEmpty()) {
             out.append("<h2>Contexts</h2>\n").append(lanes(contexts));
+        }
+        if (!eventContexts.isEmpty()) {
+            out.append(dotLanes(eventContexts, name -> name + " occurred"));
         }
         out.append("<h2>Decisions</h2>\n").append(lanes(decisions));
         out.append("<h2>Adaptations</h2>\n<table><tr><th>time (s)</th><th>variation point</th><th>from</th><th>to</th>"
@@ -173,22 +180,22 @@ public final class TimelineReport {
                 x(at), x(at), height)));
     }
 
-    /** One lane per observation: a dot each time it fired, and what it does. */
-    private String observationLanes() {
+    /** One lane per name: a dot each time it occurred, with what it is (tooltip). */
+    private String dotLanes(Map<String, List<Long>> occurrences, java.util.function.UnaryOperator<String> what) {
         int lane = 22;
-        StringBuilder svg = svgStart(observations.size() * lane + 30);
+        StringBuilder svg = svgStart(occurrences.size() * lane + 30);
         int row = 0;
-        for (Map.Entry<String, List<Long>> o : observations.entrySet()) {
+        for (Map.Entry<String, List<Long>> o : occurrences.entrySet()) {
             int middle = row * lane + lane / 2 + 2;
             String color = COLORS[row % COLORS.length];
             svg.append(text(LEFT - 8, middle + 4, "end", o.getKey(), color));
             for (long at : o.getValue()) {
                 svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%d\" r=\"4\" fill=\"%s\"><title>%s</title></circle>\n",
-                        x(at), middle, color, escape(o.getKey() + " at " + seconds(at) + " s: " + observationEffects.get(o.getKey()))));
+                        x(at), middle, color, escape(seconds(at) + " s: " + what.apply(o.getKey()))));
             }
             row++;
         }
-        axes(svg, observations.size() * lane);
+        axes(svg, occurrences.size() * lane);
         return svg.append("</svg>\n").toString();
     }
 
@@ -210,10 +217,14 @@ public final class TimelineReport {
                 String label = p.value().isNumber() ? fmt(p.value().asDouble()) : p.value().asText();
                 long until = nextChange(s.getValue(), p);
                 String fill = colorOf.computeIfAbsent(label, k -> COLORS[colorOf.size() % COLORS.length]);
+                double width = Math.max(1, x(until) - x(p.at()));
                 svg.append(String.format(Locale.ROOT,
-                        "<rect x=\"%.1f\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\" fill-opacity=\"0.25\" stroke=\"%s\"/>\n",
-                        x(p.at()), top + 4, Math.max(1, x(until) - x(p.at())), lane - 6, fill, fill));
-                svg.append(text(x(p.at()) + 4, top + 18, "start", label));
+                        "<rect x=\"%.1f\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\" fill-opacity=\"0.25\" stroke=\"%s\">"
+                                + "<title>%s</title></rect>\n",
+                        x(p.at()), top + 4, width, lane - 6, fill, fill, escape(s.getKey() + " = " + label + " from " + seconds(p.at()) + " s")));
+                if (width >= 8 + 7 * label.length()) { // a label that does not fit would run into the next one
+                    svg.append(text(x(p.at()) + 4, top + 18, "start", label));
+                }
             }
             row++;
         }

@@ -47,6 +47,7 @@ public final class LiveProvider implements AutoCloseable {
     private final BusClient bus;
     private final Thread thread;
     private final CountDownLatch stopped = new CountDownLatch(1);
+    private final CountDownLatch subscribed = new CountDownLatch(1);
     private volatile boolean running = true;
     private long last; // provider thread only: its clock, never going back
     private long nextStatus; // provider thread only
@@ -65,7 +66,8 @@ public final class LiveProvider implements AutoCloseable {
         this.periodMs = periodMs;
         this.statusIntervalMs = statusIntervalMs;
         this.decoder = new ContextDecoder(model);
-        this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived);
+        this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived)
+                .onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "roqme-provider");
     }
 
@@ -107,6 +109,15 @@ public final class LiveProvider implements AutoCloseable {
     /** Waits until the broker has subscribed to the provider's output. */
     public boolean awaitReady(long timeoutMs) throws InterruptedException {
         return bus.awaitReady(timeoutMs);
+    }
+
+    /**
+     * Waits until the provider's subscription to the contexts is live and the broker's cache of
+     * them replayed: a context published after that reaches it exactly once (one published while
+     * subscribing may arrive twice, live and from the cache, which matters to a trend window).
+     */
+    public boolean awaitSubscribed(long timeoutMs) throws InterruptedException {
+        return subscribed.await(timeoutMs, TimeUnit.MILLISECONDS);
     }
 
     private void arrived(String topic, byte[] body) {
