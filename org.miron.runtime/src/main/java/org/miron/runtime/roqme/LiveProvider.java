@@ -3,7 +3,10 @@ package org.miron.runtime.roqme;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -48,6 +51,13 @@ public final class LiveProvider implements AutoCloseable {
     private final Thread thread;
     private final CountDownLatch stopped = new CountDownLatch(1);
     private final CountDownLatch subscribed = new CountDownLatch(1);
+    /** The last contexts received, to drop the broker's replayed copies (bus thread only). */
+    private final Map<String, Boolean> recent = new LinkedHashMap<>(64, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, Boolean> eldest) {
+            return size() > 1024;
+        }
+    };
     private volatile boolean running = true;
     private long last; // provider thread only: its clock, never going back
     private long nextStatus; // provider thread only
@@ -120,7 +130,21 @@ public final class LiveProvider implements AutoCloseable {
         return subscribed.await(timeoutMs, TimeUnit.MILLISECONDS);
     }
 
+    /**
+     * Whether body is a copy of a context seen lately: the broker replays its cache of a topic to
+     * a late subscriber through every matching pipe, so the provider may get a sample twice. A
+     * sample with the same {@code time} and value is the same sample; counting it again would
+     * break a trend (`decreasing`) or count an `update` twice. Bodies without a time are all kept.
+     */
+    private boolean repeated(byte[] body) {
+        String text = new String(body, StandardCharsets.UTF_8);
+        return text.contains("\"time\"") && recent.put(text, Boolean.TRUE) != null;
+    }
+
     private void arrived(String topic, byte[] body) {
+        if (repeated(body)) {
+            return;
+        }
         if (!inbox.offer(new Arrival(body, clock.getAsLong())) && status.overflow.incrementAndGet() % 1000 == 1) {
             LOG.warning("roqme: provider behind, dropping contexts");
         }
