@@ -44,7 +44,7 @@ import picocli.CommandLine;
                 + "RoQME provider computes the metrics from the model's observations, the engine adapts the behaviour "
                 + "tree and the skills; writes OUT/report.html.",
         exitCodeListHeading = "Exit codes:%n",
-        exitCodeList = { "0:the demo ran", "1:the model has errors", "2:usage or start-up error (e.g. no minizinc)" })
+        exitCodeList = { "0:the demo ran", "1:the model has errors", "2:usage or start-up error (e.g. no minizinc, a scenario input the model does not read)" })
 public class DemoCommand implements Callable<Integer> {
     private static final String EXAMPLE = "examples/intralogistics/";
 
