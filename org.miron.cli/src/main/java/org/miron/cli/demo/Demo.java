@@ -102,7 +102,7 @@ public final class Demo {
                         + " backend.");
                 if (provider != null) {
                     out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
-                            + " from " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
+                            + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
                     provider.start();
                     if (!provider.awaitSubscribed(10_000)) {
                         throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");

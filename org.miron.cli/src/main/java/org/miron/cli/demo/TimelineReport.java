@@ -222,14 +222,24 @@ public final class TimelineReport {
                         "<rect x=\"%.1f\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\" fill-opacity=\"0.25\" stroke=\"%s\">"
                                 + "<title>%s</title></rect>\n",
                         x(p.at()), top + 4, width, lane - 6, fill, fill, escape(s.getKey() + " = " + label + " from " + seconds(p.at()) + " s")));
-                if (width >= 8 + 7 * label.length()) { // a label that does not fit would run into the next one
-                    svg.append(text(x(p.at()) + 4, top + 18, "start", label));
+                String shown = fitted(label, width);
+                if (!shown.isEmpty()) {
+                    svg.append(text(x(p.at()) + 4, top + 18, "start", shown));
                 }
             }
             row++;
         }
         axes(svg, series.size() * lane);
         return svg.append("</svg>\n").toString();
+    }
+
+    /** The label, shortened with an ellipsis to fit a band of that width (about 7 px a character), or "". */
+    private static String fitted(String label, double width) {
+        int chars = (int) ((width - 8) / 7);
+        if (chars >= label.length()) {
+            return label;
+        }
+        return chars >= 3 ? label.substring(0, chars - 1) + "…" : "";
     }
 
     /** When the value of {@code p} stops holding: the next point with another value, or the end. */
