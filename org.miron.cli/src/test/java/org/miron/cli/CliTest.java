@@ -81,6 +81,25 @@ public class CliTest {
     }
 
     @Test
+    public void aMistypedBlackboardKeyIsAWarning() throws IOException {
+        File file = write("typo.bt", "<root main_tree_to_execute=\"M\">\n  <BehaviorTree ID=\"M\"><Sequence>\n"
+                + "    <SetBlackboard output_key=\"target\" value=\"dock\"/>\n"
+                + "    <Action ID=\"MoveBase\" goal=\"{targte}\" speed=\"{speed}\"/>\n"
+                + "  </Sequence></BehaviorTree>\n</root>\n");
+        assertEquals(0, miron("check", file.getPath()));
+        // {speed} is read and written by nothing too, but no written key is near it: the host may set it
+        assertEquals(file.getPath() + ":4:32: warning [bt.key-typo]: nothing in this file or its includes writes "
+                + "blackboard key 'targte': did you mean 'target'?\n", out.toString().replace(System.lineSeparator(), "\n"));
+    }
+
+    @Test
+    public void theHospitalExampleChecksClean() {
+        assertEquals(0, miron("check", new File(ROOT, "examples/hospital-delivery/hospital.miron").getPath(),
+                new File(ROOT, "examples/hospital-delivery/hospital.bt").getPath()));
+        assertEquals("", out.toString());
+    }
+
+    @Test
     public void severalFilesAreCheckedTogether() throws IOException {
         File good = write("good.bt", "<root><BehaviorTree ID=\"A\"><AlwaysSuccess/></BehaviorTree></root>");
         File bad = write("bad.xml", "<root><BehaviorTree ID=\"B\"><SubTree ID=\"Nope\"/></BehaviorTree></root>");

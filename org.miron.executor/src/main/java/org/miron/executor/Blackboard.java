@@ -26,6 +26,8 @@ public final class Blackboard {
 
     private final Blackboard parent;
     private final Map<String, String> remapping = new ConcurrentHashMap<>();
+    /** Who made each remapping, e.g. {@code Main/travel: goal="{ward}"}, for error messages. */
+    private final Map<String, String> remappedBy = new ConcurrentHashMap<>();
     private final Map<String, Object> storage = new ConcurrentHashMap<>();
     /** How many times each entry stored here was written (BT.CPP 4's sequence_id). */
     private final Map<String, Long> writes = new ConcurrentHashMap<>();
@@ -50,6 +52,49 @@ public final class Blackboard {
             throw new IllegalStateException("a root blackboard has no parent to remap '" + internalKey + "' to");
         }
         remapping.put(internalKey, parentKey);
+    }
+
+    /** As {@link #remap(String, String)}, saying who made the remapping (named when the key is missing). */
+    public void remap(String internalKey, String parentKey, String madeBy) {
+        remap(internalKey, parentKey);
+        remappedBy.put(internalKey, madeBy);
+    }
+
+    /**
+     * Where an entry without a value was expected to come from, for an error message: the chain of
+     * remappings it follows up to the key nothing has written, e.g. {@code 'goal' is 'ward' of the
+     * parent tree (remapped by Main/travel: goal="{ward}"), which nothing has written}.
+     */
+    public String whereFrom(String key) {
+        StringBuilder text = new StringBuilder();
+        Blackboard board = this;
+        String current = key;
+        while (true) {
+            if (current.startsWith("@")) {
+                current = current.substring(1);
+                board = root();
+                text.append(" of the root tree");
+            }
+            if (board.storage.containsKey(current)) {
+                break;
+            }
+            String parentKey = board.remapping.get(current);
+            if (parentKey != null) {
+                String by = board.remappedBy.get(current);
+                text.append(text.length() == 0 ? "" : ",").append(" remapped").append(by == null ? "" : " by " + by)
+                        .append(" to the parent's '").append(parentKey).append("'");
+            } else if (board.autoRemap && !current.startsWith("_")) {
+                parentKey = current;
+                text.append(text.length() == 0 ? "" : ",").append(" auto-remapped to the parent's '").append(current)
+                        .append("'");
+            } else {
+                break;
+            }
+            board = board.parent;
+            current = parentKey;
+        }
+        return text.append(text.length() == 0 ? "" : ",").append(" nothing has written ")
+                .append(current.equals(key) ? "it" : "'" + current + "'").toString().trim();
     }
 
     /** Version 4's _autoremap: every key not found here and not starting with '_' is the parent's. */

@@ -67,7 +67,7 @@ public final class Ports {
             }
             Optional<String> key = blackboardKey(port, value);
             if (key.isPresent()) {
-                child.remap(port, key.get());
+                child.remap(port, key.get(), madeBy(port));
             } else {
                 child.set(port, value);
             }
@@ -123,11 +123,45 @@ public final class Ports {
         return getInt(port).orElseThrow(() -> missing(port));
     }
 
+    /** This node's port as written, {@code Main/travel (goal="{ward}")}: who made a remapping. */
+    public String madeBy(String port) {
+        return (owner.isEmpty() ? "" : owner + " ") + "(" + port + "=\"" + attributes.get(port) + "\")";
+    }
+
+    /**
+     * The blackboard key the port points at when that entry has no value (what BehaviorTree.CPP's
+     * getInput reports as "unable to find the key"); empty for a literal or a key with a value.
+     */
+    public Optional<String> unsetKey(String port) {
+        Optional<String> key = blackboardKey(port, attributes.get(port));
+        return key.filter(k -> blackboard.get(k).isEmpty());
+    }
+
+    /**
+     * The error of a required port that cannot be read: missing, or pointing at an entry without
+     * a value, named with where that value was expected to come from (one line).
+     */
     public BtRuntimeException missing(String port) {
+        return new BtRuntimeException(missingMessage(port));
+    }
+
+    /** The text of {@link #missing}: the node's path, then {@link #problem}. */
+    public String missingMessage(String port) {
+        return prefix() + problem(port);
+    }
+
+    /**
+     * Why a port cannot be read, without the node's path: {@code missing port 'x'}, or {@code port
+     * goal="{goal}" reads blackboard key 'goal', which has no value (...where it comes from...)}.
+     */
+    public String problem(String port) {
         String value = attributes.get(port);
-        return new BtRuntimeException(prefix() + (value == null
-                ? "missing port '" + port + "'"
-                : "port '" + port + "' points at blackboard entry '" + blackboardKey(port, value).orElse(value) + "', which is not set"));
+        if (value == null) {
+            return "missing port '" + port + "'";
+        }
+        String key = blackboardKey(port, value).orElse(value);
+        return "port " + port + "=\"" + value + "\" reads blackboard key '" + key + "', which has no value ("
+                + blackboard.whereFrom(key) + ")";
     }
 
     private String prefix() {

@@ -46,6 +46,7 @@ public final class TreeBuilder {
     private final ActionRegistry registry;
     private final TreeContext context;
     private final Map<Resource, Map<String, BehaviorTree>> visibleTrees = new HashMap<>();
+    private final DeclaredOutputs declaredOutputs = new DeclaredOutputs();
     /** Makes the version-4 nodes while a version-4 tree is built; null for version 3. */
     private V4Nodes v4;
 
@@ -175,9 +176,9 @@ public final class TreeBuilder {
         case DECORATOR:
             return registry.createDecorator(id, info, children.get(0));
         case CONDITION:
-            return registry.create(new ActionSpec(id, ActionSpec.Kind.CONDITION, info));
+            return registry.create(declaredOutputs.spec(node, id, ActionSpec.Kind.CONDITION, info));
         default:
-            return registry.create(new ActionSpec(id, ActionSpec.Kind.ACTION, info));
+            return registry.create(declaredOutputs.spec(node, id, ActionSpec.Kind.ACTION, info));
         }
     }
 
@@ -196,7 +197,7 @@ public final class TreeBuilder {
                 return v4 != null ? subtreeV4(tree, info, blackboard, stack) : plainSubtree(tree, info, blackboard, stack);
             }
             ActionSpec.Kind spec = kind == NodeKind.CONDITION ? ActionSpec.Kind.CONDITION : ActionSpec.Kind.ACTION;
-            return registry.create(new ActionSpec(tag, spec, info));
+            return registry.create(declaredOutputs.spec(node, tag, spec, info));
         }
         return customControl(tag, info, children);
     }
@@ -248,7 +249,7 @@ public final class TreeBuilder {
     private static void remapByName(NodeInfo info, Blackboard blackboard) {
         info.ports().attributes().forEach((port, value) -> {
             if (!port.equals("name") && !port.equals(SHARED_BLACKBOARD)) {
-                blackboard.remap(port, Ports.blackboardKey(port, value).orElse(value));
+                blackboard.remap(port, Ports.blackboardKey(port, value).orElse(value), info.ports().madeBy(port));
             }
         });
     }

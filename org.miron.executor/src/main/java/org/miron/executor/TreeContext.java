@@ -2,6 +2,7 @@ package org.miron.executor;
 
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
 import org.miron.executor.trace.StatusListener;
 
 /** What every node of one tree shares: the clock, the status listeners and the loop guard. */
@@ -17,6 +18,7 @@ public final class TreeContext {
     private final int maxLoopsPerTick;
     private final List<StatusListener> listeners = new CopyOnWriteArrayList<>();
     private volatile boolean wakeUp;
+    private volatile Consumer<String> problems = System.err::println;
 
     public TreeContext() {
         this(MillisClock.SYSTEM, DEFAULT_MAX_LOOPS_PER_TICK);
@@ -56,6 +58,19 @@ public final class TreeContext {
         boolean asked = wakeUp;
         wakeUp = false;
         return asked;
+    }
+
+    /**
+     * Where a node's one-line account of why it failed goes (a skill not pushed because an input
+     * key has no value...): standard error unless set, e.g. to a test's list or a log.
+     */
+    public void onProblem(Consumer<String> sink) {
+        problems = sink;
+    }
+
+    /** Reports one line through {@link #onProblem}. */
+    public void reportProblem(String line) {
+        problems.accept(line);
     }
 
     public void addListener(StatusListener listener) {

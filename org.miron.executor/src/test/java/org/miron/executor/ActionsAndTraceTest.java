@@ -111,7 +111,9 @@ public class ActionsAndTraceTest {
         Ports ports = new Ports("detect", java.util.Map.of("ID", "detect", "where", "{place}", "found", "{obj}", "mode", "fast"),
                 Blackboard.create());
         ports.blackboard().set("place", "table");
-        SkillActionNode node = new SkillActionNode(NodeInfo.of("detect", ports, new TreeContext()), "detect", skills);
+        // found is declared an output_port (TreeNodesModel): written from the result, not sent
+        SkillActionNode node = new SkillActionNode(NodeInfo.of("detect", ports, new TreeContext()), "detect", skills,
+                java.util.Set.of("found"));
         assertEquals(RUNNING, node.executeTick());
         assertEquals(java.util.Map.of("where", "table", "mode", "fast"), skills.last().inAttributes());
         skills.results.get(0).complete(new SkillResult(SkillResult.Outcome.SUCCESS, null, java.util.Map.of("found", "cup", "mode", "x")));

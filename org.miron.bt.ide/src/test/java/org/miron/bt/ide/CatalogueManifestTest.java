@@ -8,8 +8,8 @@ import java.util.List;
 import java.util.Map;
 
 import org.junit.Test;
-import org.miron.bt.ide.nodes.NodeDeclaration;
-import org.miron.bt.ide.nodes.NodeDeclarations;
+import org.miron.bt.nodes.NodeDeclaration;
+import org.miron.bt.nodes.NodeDeclarations;
 import org.miron.bt.nodes.NodeCatalogue;
 import org.miron.bt.nodes.NodeModel;
 import org.miron.bt.nodes.PortModel;

@@ -7,8 +7,8 @@ import java.util.Map;
 
 import org.junit.Test;
 import org.miron.bt.ide.contentassist.TagContext;
-import org.miron.bt.ide.nodes.NodeDeclaration;
-import org.miron.bt.ide.nodes.NodeDeclarations;
+import org.miron.bt.nodes.NodeDeclaration;
+import org.miron.bt.nodes.NodeDeclarations;
 
 /** Where the caret is in a start tag, and what a TreeNodesModel declares, read from text. */
 public class TagContextTest {

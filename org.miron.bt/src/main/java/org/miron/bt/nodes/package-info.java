@@ -23,6 +23,11 @@
  * load-time checks; the port-name constants of {@link org.miron.bt.nodes.BuiltinNodes} replace
  * hand-typed names such as "num_cycles".
  *
+ * <p>Nodes the application registers are described by the file itself: {@link
+ * org.miron.bt.nodes.NodeDeclarations} reads the {@code <TreeNodesModel>} of a file and its
+ * includes (ports with their direction), for the IDE, the key checks of the validator and the
+ * executor (a skill's declared output ports are written, not sent).
+ *
  * <p>Adding a built-in node: one entry in {@link org.miron.bt.nodes.BuiltinNodes} (and its keyword
  * and rule in Bt.xtext, which the test demands), and its executor class in the executor's builder
  * table (org.miron.executor's BuiltinFactories, whose BuiltinFactoriesTest fails until it is there;

@@ -35,6 +35,42 @@ public final class Suggestions {
                 .limit(MAX).collect(Collectors.toList());
     }
 
+    /**
+     * Whether {@code a} looks like a mistyped {@code b} (or the reverse): one or two edits apart
+     * (a swap of neighbours is one), fewer than half the shorter name, and not two names of one
+     * family that differ in a single one-letter or numeric word ({@code x_input}/{@code y_input},
+     * {@code pose1}/{@code pose2}), which are written that way on purpose.
+     */
+    public static boolean isTypo(String a, String b) {
+        int edits = distance(a, b);
+        if (edits < 1 || edits > 2 || 2 * edits >= Math.min(a.length(), b.length())) {
+            return false;
+        }
+        List<String> wordsA = words(a);
+        List<String> wordsB = words(b);
+        if (wordsA.size() != wordsB.size()) {
+            return true;
+        }
+        List<Integer> differing = new java.util.ArrayList<>();
+        for (int i = 0; i < wordsA.size(); i++) {
+            if (!wordsA.get(i).equals(wordsB.get(i))) {
+                differing.add(i);
+            }
+        }
+        if (differing.size() != 1) {
+            return true;
+        }
+        String wordA = wordsA.get(differing.get(0));
+        String wordB = wordsB.get(differing.get(0));
+        boolean family = wordA.length() == 1 && wordB.length() == 1 || wordA.matches("\\d+") && wordB.matches("\\d+");
+        return !family;
+    }
+
+    /** A name's words: split at _ - . and at lower-to-upper case and letter-digit changes. */
+    private static List<String> words(String name) {
+        return List.of(name.split("[_\\-.]+|(?<=\\p{Ll})(?=\\p{Lu})|(?<=\\p{L})(?=\\d)|(?<=\\d)(?=\\p{L})"));
+    }
+
     /** Twice the edit distance ignoring case, plus one if the spellings also differ in case. */
     private static int cost(String a, String b) {
         int folded = distance(a.toLowerCase(Locale.ROOT), b.toLowerCase(Locale.ROOT));
@@ -45,7 +81,7 @@ public final class Suggestions {
      * Optimal string alignment distance: insertions, deletions, substitutions and swaps of two
      * adjacent characters (the commonest typo, Mian for Main) each count as one edit.
      */
-    static int distance(String a, String b) {
+    public static int distance(String a, String b) {
         int[][] d = new int[a.length() + 1][b.length() + 1];
         for (int i = 0; i <= a.length(); i++) {
             d[i][0] = i;

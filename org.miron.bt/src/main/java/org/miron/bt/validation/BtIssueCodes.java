@@ -116,6 +116,13 @@ public final class BtIssueCodes {
      */
     public static final String COMPACT_SUBTREE = "bt.compact-subtree";
 
+    /**
+     * A port reads a blackboard key that nothing in the file or its includes writes, while a written
+     * key has a near-identical name (a warning: the typo {@code {targte}} beside {@code target}).
+     * Data: the written keys it may mean, nearest first.
+     */
+    public static final String KEY_TYPO = "bt.key-typo";
+
     // ------------------------------------------------------------------ BehaviorTree.CPP versions (3 and 4)
 
     /** BTCPP_format other than 3 or 4. Data: {@code 4}. */

@@ -42,7 +42,8 @@ import org.miron.bt.util.Suggestions;
  * sees every mistake with its position. Where a file is valid but will not load in current
  * BehaviorTree.CPP 3 releases, a warning says what to write instead.
  */
-@ComposedChecks(validators = { BtVersionValidator.class, BtV4Validator.class, BtBuiltinValidator.class })
+@ComposedChecks(validators = { BtVersionValidator.class, BtV4Validator.class, BtBuiltinValidator.class,
+        BtKeyValidator.class })
 public class BtValidator extends AbstractBtValidator {
 
     private static final BtPackage BT = BtPackage.eINSTANCE;

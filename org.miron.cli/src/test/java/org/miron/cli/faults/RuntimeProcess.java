@@ -58,6 +58,11 @@ final class RuntimeProcess implements AutoCloseable {
         }
     }
 
+    /** Waits for the command to end by itself: its exit status, -1 if it did not end in time. */
+    int awaitExit(long timeoutMs) throws InterruptedException {
+        return process.waitFor(timeoutMs, TimeUnit.MILLISECONDS) ? process.exitValue() : -1;
+    }
+
     /** SIGTERM, then the exit status (-1 if it did not end in time). */
     int terminate(long timeoutMs) throws InterruptedException {
         process.destroy();

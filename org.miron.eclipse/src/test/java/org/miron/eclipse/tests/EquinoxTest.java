@@ -16,6 +16,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.ServiceLoader;
+import java.util.Set;
 import java.util.TreeSet;
 import java.util.stream.Collectors;
 
@@ -270,18 +271,20 @@ public class EquinoxTest {
     }
 
     @Test
-    public void generateCommandWritesTheFourFilesThroughTheServer() throws Exception {
+    public void generateCommandWritesTheFiveFilesThroughTheServer() throws Exception {
         String broken = Files.readString(example("intralogistics.miron")).replaceFirst("import", "imprt");
         List<String> result = call("generateThroughCommand", example("intralogistics.miron").getParent().toString(), broken);
-        // Four files in generated/, refreshed into the workspace; then the broken copy's status.
-        assertEquals(result.toString(), 5, result.size());
-        assertTrue(result.toString(), result.subList(0, 4).stream().anyMatch(f -> f.endsWith(".io.json")));
-        assertTrue(result.toString(), result.subList(0, 4).stream().anyMatch(f -> f.endsWith(".mzn")));
-        assertTrue(result.get(4), result.get(4).startsWith("ERROR Not generated: broken.miron has"));
+        // Five files in generated/ (tree, mzn, dzn, io.json, roqme.json), refreshed into the
+        // workspace; then the broken copy's status.
+        assertEquals(result.toString(), 6, result.size());
+        assertTrue(result.toString(), result.subList(0, 5).stream().anyMatch(f -> f.endsWith(".io.json")));
+        assertTrue(result.toString(), result.subList(0, 5).stream().anyMatch(f -> f.endsWith(".mzn")));
+        assertTrue(result.toString(), result.subList(0, 5).stream().anyMatch(f -> f.endsWith(".roqme.json")));
+        assertTrue(result.get(5), result.get(5).startsWith("ERROR Not generated: broken.miron has"));
     }
 
     @Test
-    public void theGeneratorWritesTheFourFiles() throws Exception {
+    public void theGeneratorWritesTheFiveFiles() throws Exception {
         Path out = tmp.newFolder("generated").toPath();
         List<String> result = call("generate", List.of(example("intralogistics.miron").toString()), out.toString());
         assertEquals(result.toString(), "WRITTEN", result.get(0));
@@ -289,7 +292,8 @@ public class EquinoxTest {
         try (var list = Files.list(out)) {
             list.forEach(p -> files.add(p.getFileName().toString()));
         }
-        assertEquals(result.toString(), 4, files.size());
+        assertEquals(files.toString(), Set.of("intralogistics.ext.xml", "intralogistics.mzn", "intralogistics.dzn",
+                "intralogistics.io.json", "intralogistics.roqme.json"), files);
         for (String f : files) {
             assertTrue(f, Files.size(out.resolve(f)) > 0);
         }

@@ -21,6 +21,6 @@ public final class SkillActionStrategy implements UnregisteredActionStrategy {
             throw new BtBuildException(spec.info().path() + ": condition '" + spec.id()
                     + "' is not registered; conditions must be registered Java conditions, not skills");
         }
-        return new SkillActionNode(spec.info(), spec.id(), client);
+        return new SkillActionNode(spec.info(), spec.id(), client, spec.outputPorts());
     }
 }

@@ -7,6 +7,7 @@
  * a VariantAction runs the variant last published into a
  * {@link org.miron.executor.skills.VariantSource}, and {@link org.miron.executor.skills.BlackboardFeed}
  * copies numeric decisions into the blackboard. org.miron.runtime supplies the ZeroMQ client and
- * feeds the sources from the bus; tests supply fakes.
+ * feeds the sources from the bus; tests supply fakes. A skill never receives an unresolved
+ * {@code {key}}: an input whose key has no value fails the node before anything is sent.
  */
 package org.miron.executor.skills;

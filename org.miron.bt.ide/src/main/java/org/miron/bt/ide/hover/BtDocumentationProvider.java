@@ -13,8 +13,8 @@ import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BehaviorTree;
 import org.miron.bt.bt.TreeNode;
 import org.miron.bt.ide.nodes.BuiltinAttributes;
-import org.miron.bt.ide.nodes.NodeDeclaration;
-import org.miron.bt.ide.nodes.NodeDeclarations;
+import org.miron.bt.nodes.NodeDeclaration;
+import org.miron.bt.nodes.NodeDeclarations;
 import org.miron.bt.util.BtFormats;
 
 /**

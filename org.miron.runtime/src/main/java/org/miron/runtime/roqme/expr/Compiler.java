@@ -468,30 +468,8 @@ public final class Compiler {
         return Values.ref(slot);
     }
 
-    /** A reference's declared type; else the checker's static type, or one inferred when absent. */
-    String typeOf(JsonNode e) {
-        if (e.has("ref") && symbols.containsKey(e.get("ref").asText())) {
-            return symbols.get(e.get("ref").asText()).valueType(); // the declaration knows best
-        }
-        String t = e.path("type").asText(null);
-        if (t != null && !t.equals("unknown")) {
-            return t;
-        }
-        String op = e.path("op").asText("");
-        if (List.of("!", "&", "|", "=", "!=", "<", ">", "<=", ">=").contains(op)) {
-            return "boolean";
-        }
-        if (List.of("and", "or", "->", "once", "not", "while", "repeat", "range").contains(op)) {
-            return "event";
-        }
-        String fn = e.path("call").asText("");
-        if (List.of("eventWhen", "update").contains(fn)) {
-            return "event";
-        }
-        if (List.of("increasing", "decreasing", "stable", "isEmpty", "includes").contains(fn) || e.has("boolean")) {
-            return "boolean";
-        }
-        return e.has("enum") ? "enum" : e.has("event") ? "event" : "number";
+    private String typeOf(JsonNode e) {
+        return TypeOf.of(e, symbols);
     }
 
     private ModelException error(String code, String message) {

@@ -1,4 +1,4 @@
-package org.miron.bt.ide.nodes;
+package org.miron.bt.nodes;
 
 import java.io.StringReader;
 import java.util.LinkedHashMap;
