@@ -5,12 +5,22 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import org.miron.cli.demo.Demo;
+import org.miron.cli.demo.ScenarioInputs;
+import org.miron.generator.RoqmeRuntimeModel;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.engine.IoModel;
+import org.miron.runtime.roqme.expr.CompiledModel;
+import org.miron.runtime.roqme.expr.Compiler;
+import org.miron.runtime.roqme.model.ModelException;
+import org.miron.runtime.roqme.model.ModelReader;
+import org.miron.runtime.roqme.model.RoqmeModel;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.player.Scenario;
@@ -23,25 +33,28 @@ import picocli.CommandLine.Spec;
 import picocli.CommandLine;
 
 /**
- * `miron demo`: generates the intralogistics example and runs the whole loop on it in one JVM
- * (broker, engine, mock skill interface, BT executor, scenario player), telling each adaptation
- * as it happens and writing a timeline report at the end.
+ * `miron demo`: generates a model (the intralogistics example by default) and runs the whole loop on
+ * it in one JVM (broker, RoQME provider, engine, mock skill interface, BT executor, scenario player
+ * publishing contexts), telling each fired observation and adaptation as it happens and writing a
+ * timeline report at the end. Its inputs come from demo/ next to the model; a scenario that does
+ * not fit the model is refused (README.md, docs/wire-formats.md).
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "Runs the MIRoN loop on an example in one process: the battery drains and the robot docks, "
-                + "safety drops and the velocity follows; writes OUT/report.html.",
+        description = "Runs the MIRoN loop on a model in one process: a scenario publishes the robot's contexts, the "
+                + "RoQME provider computes the metrics from the model's observations, the engine adapts the behaviour "
+                + "tree and the skills; writes OUT/report.html.",
         exitCodeListHeading = "Exit codes:%n",
-        exitCodeList = { "0:the demo ran", "1:the model has errors", "2:usage or start-up error (e.g. no minizinc)" })
+        exitCodeList = { "0:the demo ran", "1:the model has errors", "2:usage or start-up error (e.g. no minizinc, a scenario input the model does not read)" })
 public class DemoCommand implements Callable<Integer> {
     private static final String EXAMPLE = "examples/intralogistics/";
 
     @Option(names = "--model", paramLabel = "FILE.miron", description = "the MIRoN model (default: the intralogistics example)")
     Path model;
 
-    @Option(names = "--scenario", paramLabel = "FILE", description = "the scenario to play (default: the example's)")
+    @Option(names = "--scenario", paramLabel = "FILE", description = "the scenario to play (default: demo/scenario.json next to the model, else the intralogistics example's)")
     Path scenario;
 
-    @Option(names = "--skills", paramLabel = "FILE", description = "the mock skill table (default: the example's)")
+    @Option(names = "--skills", paramLabel = "FILE", description = "the mock skill table (default: demo/skills.json next to the model, else the intralogistics example's)")
     Path skills;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "miron-demo",
@@ -60,6 +73,19 @@ public class DemoCommand implements Callable<Integer> {
             description = "the engine's solver: native (in process, the default), minizinc (the reference) or both")
     String backend;
 
+    @Option(names = "--allow-unknown-inputs",
+            description = "play a scenario even if it publishes contexts or estimates the model does not read "
+                    + "(listed at start; by default the run is refused)")
+    boolean allowUnknownInputs;
+
+    @Option(names = "--no-provider",
+            description = "do not run the RoQME provider: the scenario's estimate lines are the metrics")
+    boolean noProvider;
+
+    @Option(names = "--period", paramLabel = "MS", defaultValue = "1000",
+            description = "the RoQME provider's tick in scenario time (default: ${DEFAULT-VALUE})")
+    long period;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -70,9 +96,13 @@ public class DemoCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         Path home = Path.of(System.getProperty("miron.home", "."));
         Path modelFile = model != null ? model : home.resolve(EXAMPLE + "intralogistics.miron");
-        Path scenarioFile = scenario != null ? scenario : home.resolve(EXAMPLE + "demo/scenario.json");
-        Path skillsFile = skills != null ? skills : home.resolve(EXAMPLE + "demo/skills.json");
-        for (Path file : new Path[] { modelFile, scenarioFile, skillsFile }) {
+        PrintWriter console = spec.commandLine().getOut();
+        if (!Files.isRegularFile(modelFile)) {
+            return usage(modelFile + ": error: no such file");
+        }
+        Path scenarioFile = scenario != null ? scenario : input(modelFile, "scenario.json", home, console);
+        Path skillsFile = skills != null ? skills : input(modelFile, "skills.json", home, console);
+        for (Path file : new Path[] { scenarioFile, skillsFile }) {
             if (!Files.isRegularFile(file)) {
                 return usage(file + ": error: no such file");
             }
@@ -85,7 +115,6 @@ public class DemoCommand implements Callable<Integer> {
         }
         Path generated = out.resolve("model");
         String name = modelFile.getFileName().toString().replaceFirst("\\.miron$", "");
-        PrintWriter console = spec.commandLine().getOut();
         console.println("MIRoN demo: generating " + modelFile + " into " + generated);
         CommandLine generate = MironCli.commandLine();
         generate.setOut(spec.commandLine().getOut());
@@ -105,20 +134,51 @@ public class DemoCommand implements Callable<Integer> {
         }
         Scenario steps;
         SkillTable table;
+        IoModel io;
+        CompiledModel roqme = null;
+        RoqmeModel roqmeModel = null;
         try {
             steps = Scenario.load(scenarioFile);
             table = SkillTable.load(skillsFile);
+            io = IoModel.load(generated.resolve(name + ".io.json"));
+            Path roqmeJson = generated.resolve(name + RoqmeRuntimeModel.SUFFIX);
+            if (!noProvider && Files.isRegularFile(roqmeJson)) {
+                roqmeModel = ModelReader.read(roqmeJson);
+                roqme = Compiler.compile(roqmeModel, new LinkedHashMap<>());
+            }
+        } catch (ModelException e) {
+            return usage(e.getMessage());
         } catch (IOException | RuntimeException e) {
             return usage("miron demo: error: " + e.getMessage());
         }
+        List<String> unknown = ScenarioInputs.unknown(steps, scenarioFile.getFileName().toString(), io,
+                roqmeModel, modelFile.getFileName().toString());
+        if (!unknown.isEmpty()) {
+            PrintWriter err = spec.commandLine().getErr();
+            unknown.forEach(err::println);
+            if (!allowUnknownInputs) {
+                return usage("miron demo: error: " + scenarioFile + " was not written for " + modelFile.getFileName()
+                        + " (the engine would decide on its defaults); give the model's own --scenario, or pass "
+                        + "--allow-unknown-inputs to play it anyway");
+            }
+            err.println("miron demo: warning: playing it anyway (--allow-unknown-inputs): the model ignores these inputs");
+            err.flush();
+        }
+        long scripted = steps.steps().stream().filter(st -> st.topic().equals(Topics.ESTIMATE)).count();
+        if (roqme != null && scripted > 0) {
+            console.println("MIRoN demo: " + scenarioFile.getFileName() + " scripts " + scripted + " estimates while the "
+                    + "RoQME provider computes the metrics: both are published (--no-provider plays only the scripted ones)");
+        }
         Path tree = generated.resolve(name + ".ext.xml");
-        console.println("MIRoN demo: broker, engine, skill interface mock, BT executor and scenario player start;"
+        console.println("MIRoN demo: broker, " + (roqme == null ? "" : "RoQME provider, ")
+                + "engine, skill interface mock, BT executor and scenario player start;"
                 + " the scenario lasts about " + Math.round(lastStep(steps) * timeScale / 1000.0) + " s.");
         console.println("    time  who     what");
         Demo.Result result;
         try {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
-                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend).run();
+                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend)
+                    .provider(roqme, period).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());
         }
@@ -129,6 +189,21 @@ public class DemoCommand implements Callable<Integer> {
         console.println("  report:       " + result.report() + "   (open it in a browser)");
         console.flush();
         return 0;
+    }
+
+    /**
+     * A demo input of the model: {@code <model dir>/demo/<file>} when there is one, else the
+     * intralogistics example's, said on the console.
+     */
+    private static Path input(Path modelFile, String file, Path home, PrintWriter console) {
+        Path dir = modelFile.toAbsolutePath().getParent();
+        Path own = dir == null ? null : dir.resolve("demo").resolve(file);
+        if (own != null && Files.isRegularFile(own)) {
+            return own;
+        }
+        Path fallback = home.resolve(EXAMPLE + "demo/" + file);
+        console.println("MIRoN demo: no demo/" + file + " next to " + modelFile.getFileName() + ": using " + fallback);
+        return fallback;
     }
 
     private static long lastStep(Scenario scenario) {

@@ -12,9 +12,6 @@ import java.util.concurrent.Callable;
 import org.miron.runtime.roqme.LiveProvider;
 import org.miron.runtime.roqme.Replay;
 import org.miron.runtime.roqme.expr.CompiledModel;
-import org.miron.runtime.roqme.expr.Compiler;
-import org.miron.runtime.roqme.model.ModelException;
-import org.miron.runtime.roqme.model.ModelReader;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -23,10 +20,13 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** {@code miron roqme run|replay MODEL.roqme.json}: the RoQME QoS Metrics Provider (docs/roqme-provider.md). */
+/**
+ * {@code miron roqme run|replay MODEL}: the RoQME QoS Metrics Provider (docs/roqme-provider.md) on a
+ * .roqme or .miron source or a generated name.roqme.json.
+ */
 @Command(name = "roqme", mixinStandardHelpOptions = true,
-        description = "The RoQME QoS Metrics Provider: computes the properties of a generated name.roqme.json from "
-                + "the contexts, live on the bus (run) or from a recorded trace (replay).",
+        description = "The RoQME QoS Metrics Provider: computes the properties of a RoQME model (.roqme, .miron or "
+                + "a generated name.roqme.json) from the contexts, live on the bus (run) or from a recorded trace (replay).",
         subcommands = { RoqmeCommand.Run.class, RoqmeCommand.ReplayTrace.class })
 public final class RoqmeCommand implements Runnable {
     @Spec
@@ -39,8 +39,8 @@ public final class RoqmeCommand implements Runnable {
 
     /** The options both subcommands share. */
     static final class ModelOptions {
-        @Parameters(index = "0", paramLabel = "MODEL", description = "the generated name.roqme.json (`miron generate` writes it "
-                + "for a .roqme file and for the RoQME part of a .miron file)")
+        @Parameters(index = "0", paramLabel = "MODEL", description = "a .roqme model, a .miron model (its RoQME part), both generated in memory, "
+                + "or the name.roqme.json `miron generate` writes for them")
         Path model;
 
         @Option(names = "--period", paramLabel = "MS", description = "tick: estimates are computed every MS (default: ${DEFAULT-VALUE})")
@@ -51,22 +51,11 @@ public final class RoqmeCommand implements Runnable {
 
         /** The compiled model, or null after printing why not (file:line:col: error [code]: message). */
         CompiledModel load(String command, PrintWriter err) {
-            String file = model.getFileName() == null ? "" : model.getFileName().toString();
-            if (!file.endsWith(".json")) {
-                err.println("miron roqme " + command + ": error: " + model + " is not a runtime model: run `miron generate "
-                        + model + "` and pass the name.roqme.json it writes");
-                return null;
-            }
             if (period <= 0) {
                 err.println("miron roqme " + command + ": error: --period must be positive, got " + period);
                 return null;
             }
-            try {
-                return Compiler.compile(ModelReader.read(model), new LinkedHashMap<>(params));
-            } catch (ModelException e) {
-                err.println(e.getMessage());
-                return null;
-            }
+            return RoqmeSources.compile(model, new LinkedHashMap<>(params), err);
         }
     }
 

@@ -79,22 +79,24 @@ public class DemoCommandTest {
 
         String told = out.toString();
         assertEquals(err.toString() + told, 0, status);
-        // Safety drops when a person comes close: the velocity parameter goes down, then back up.
-        int safetyLow = told.indexOf("RoQME   safety = 0.35");
+        // A person comes close: the provider's safety drops, the velocity parameter goes down, then back up.
+        int safetyLow = told.indexOf("personNearby fired: undermines safety → safety");
         int slow = told.indexOf("ADAPT   maxVelocity -> 10 (change-parameter SmartCdServer transvel)");
         int fast = told.indexOf("ADAPT   maxVelocity -> 100", slow);
         assertTrue(told, 0 <= safetyLow && safetyLow < slow && slow < fast);
         // The battery runs low: the tree switches to the Charge subtree, then back after charging.
-        int batteryLow = told.indexOf("RoQME   power_autonomy = 0.25");
+        int batteryLow = told.indexOf("batteryLow fired: undermines power_autonomy (veryhigh) → power_autonomy");
         int dock = told.indexOf("ADAPT   task -> dock (behaviour tree switches branch)");
         int charged = told.indexOf("ADAPT   task -> pickDeliverCharge", dock);
         assertTrue(told, 0 <= batteryLow && batteryLow < dock && dock < charged);
         assertTrue(told, told.indexOf("ROBOT   MoveTo x=-9.33 y=2.17", batteryLow) > 0);
         assertTrue(told, told.contains("3 parameter changes applied by the skill interface"));
+        assertTrue(told, !told.contains("scripts"));
 
         String report = Files.readString(dir.resolve("report.html"));
         assertTrue(report.contains("<td>task</td><td>pickDeliverCharge</td><td>dock</td>"));
         assertTrue(report.contains("<td>maxVelocity</td><td>100</td><td>10</td>"));
+        assertTrue(report.contains("<h2>Observations fired</h2>"));
         assertTrue(Files.readAllLines(dir.resolve("decisions.jsonl")).size() >= 4);
         String tree = Files.readString(dir.resolve("model/intralogistics.ext.xml"));
         assertEquals(tree, version == 4, tree.contains("BTCPP_format=\"4\""));
@@ -118,5 +120,94 @@ public class DemoCommandTest {
         assertEquals(2, cli.execute("demo", "--scenario", new File(temp.getRoot(), "none.json").getPath(),
                 "--out", temp.getRoot().getPath()));
         assertTrue(err.toString(), err.toString().contains("none.json: error: no such file"));
+    }
+
+    /**
+     * The second example tells its own story from its own demo/ inputs: near misses and a dense
+     * corridor undermine safety (careful navigation, slow and wide), they disturb the ward (the robot
+     * disinfects after the handover), a draining battery sends it to charge first, and a charge
+     * brings it back.
+     */
+    @Test
+    public void theHospitalDemoTellsItsOwnStory() throws Exception {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        Path dir = temp.getRoot().toPath();
+        int status = cli.execute("demo", "--model", new File(ROOT, "examples/hospital-delivery/hospital.miron").getPath(),
+                "--out", dir.toString(), "--time-scale", "0.4");
+        String told = out.toString();
+        assertEquals(err.toString() + told, 0, status);
+        assertEquals("", err.toString());
+        assertTrue(told, !told.contains("no demo/"));
+        assertTrue(told, !told.contains("Intralogistics") && !told.contains("BatteryLevel"));
+        int nearMiss = told.indexOf("nearMisses fired: undermines safety (high) → safety");
+        int careful = told.indexOf("ADAPT   navigation -> careful", nearMiss);
+        int wide = told.indexOf("ADAPT   inflation -> 0.8", nearMiss);
+        assertTrue(told, 0 <= nearMiss && nearMiss < careful && nearMiss < wide);
+        assertTrue(told, told.contains("crowded fired: undermines safety (veryhigh)"));
+        assertTrue(told, told.contains("nearMisses fired: undermines comfort → comfort"));
+        int draining = told.indexOf("draining fired: undermines autonomy (high) → autonomy");
+        int charge = told.indexOf("ADAPT   preparation -> charge (behaviour tree switches branch)");
+        int charged = told.indexOf("charged fired: clears autonomy, reinforces autonomy (high) → autonomy");
+        int none = told.indexOf("ADAPT   preparation -> none", charge);
+        assertTrue(told, 0 <= draining && draining < charge && charge < charged && charged < none);
+        assertTrue(told, told.indexOf("ROBOT   toCharger", charge) > 0);
+        String report = Files.readString(dir.resolve("report.html"));
+        assertTrue(report, report.contains("<tr><td>draining</td><td>undermines autonomy (HIGH)</td>"));
+    }
+
+    /**
+     * Issue 30: given only --model, a model without demo/ inputs gets the intralogistics scenario,
+     * said at start; its inputs are not the hospital's, so the run is refused (exit 2) and each
+     * unknown input named, unless --allow-unknown-inputs.
+     */
+    @Test
+    public void aScenarioForAnotherModelIsRefused() throws Exception {
+        Path model = temp.newFolder("hospital").toPath();
+        for (String file : List.of("hospital.miron", "hospital.roqme", "hospital.bt")) {
+            Files.copy(new File(ROOT, "examples/hospital-delivery/" + file).toPath(), model.resolve(file));
+        }
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        Path dir = temp.newFolder("out").toPath();
+        assertEquals(2, cli.execute("demo", "--model", model.resolve("hospital.miron").toString(), "--out", dir.toString()));
+        assertTrue(out.toString(), out.toString().contains("no demo/scenario.json next to hospital.miron: using "));
+        String refused = err.toString();
+        assertTrue(refused, refused.contains("scenario.json: BatteryLevel (Intralogistics) is not an input of hospital.miron"));
+        assertTrue(refused, refused.contains("scenario.json: HumanDistance (Intralogistics) is not an input of hospital.miron"));
+        assertTrue(refused, refused.contains("--allow-unknown-inputs"));
+        assertTrue(out.toString(), !out.toString().contains("ADAPT"));
+
+        // a scripted estimate of a metric the model does not have is named too
+        Path scenario = dir.resolve("scenario.json");
+        Files.writeString(scenario, "[{\"at\": 0, \"estimate\": {\"name\": \"power_autonomy\", \"namespace\": \"Intralogistics\", \"value\": 0.9}},\n"
+                + " {\"at\": 0, \"context\": {\"name\": \"battery\", \"namespace\": \"Hospital\", \"type\": \"number\", \"value\": 80}}]");
+        StringWriter err2 = new StringWriter();
+        CommandLine again = MironCli.commandLine();
+        again.setOut(new PrintWriter(new StringWriter(), true));
+        again.setErr(new PrintWriter(err2, true));
+        assertEquals(2, again.execute("demo", "--model", model.resolve("hospital.miron").toString(), "--scenario",
+                scenario.toString(), "--out", dir.toString()));
+        assertTrue(err2.toString(), err2.toString().startsWith(
+                "scenario.json: power_autonomy (Intralogistics) is not an input of hospital.miron"));
+        assertTrue(err2.toString(), !err2.toString().contains("battery"));
+
+        // asked to go on, it plays
+        StringWriter out3 = new StringWriter();
+        StringWriter err3 = new StringWriter();
+        CommandLine anyway = MironCli.commandLine();
+        anyway.setOut(new PrintWriter(out3, true));
+        anyway.setErr(new PrintWriter(err3, true));
+        assertEquals(err3.toString(), 0, anyway.execute("demo", "--model", model.resolve("hospital.miron").toString(), "--scenario",
+                scenario.toString(), "--skills", new File(ROOT, "examples/hospital-delivery/demo/skills.json").getPath(),
+                "--out", dir.toString(), "--time-scale", "0.2", "--allow-unknown-inputs"));
+        assertTrue(err3.toString(), err3.toString().contains("playing it anyway"));
+        assertTrue(out3.toString(), out3.toString().contains("RoQME   battery = 80"));
     }
 }

@@ -120,11 +120,41 @@ public class RoqmeCommandTest {
         Cli run = new Cli();
         assertEquals(2, run.run("roqme", "run", model.toString()));
         assertEquals("worked.roqme:12:13: error [roqme-ref]: unknown belief nope", run.err.toString().trim());
-        Cli src = new Cli();
-        assertEquals(2, src.run("roqme", "run", "examples/intralogistics/intralogistics.roqme"));
-        assertTrue(src.err.toString(), src.err.toString().contains("run `miron generate"));
         assertEquals(2, Cli.exit("roqme", "replay", p("worked.roqme.json"), "--trace", p("none.jsonl")));
         assertEquals(2, Cli.exit("roqme", "replay", p("worked.roqme.json"), "--trace", p("worked.trace.jsonl"), "--format", "xml"));
         assertEquals(2, Cli.exit("roqme"));
+    }
+
+    /** A .roqme or .miron source is generated in memory: the same provider as on the generated file. */
+    @Test
+    public void replayTakesRoqmeAndMironSources() throws Exception {
+        Path trace = dir.resolve("battery.jsonl");
+        Files.writeString(trace, "{\"name\":\"BatteryLevel\",\"type\":\"number\",\"value\":90,\"time\":0}\n"
+                + "{\"name\":\"BatteryLevel\",\"type\":\"number\",\"value\":25,\"time\":1500}\n");
+        Path example = Cli.ROOT.resolve("examples/intralogistics");
+        Cli roqme = new Cli();
+        assertEquals(roqme.err.toString(), 0, roqme.run("roqme", "replay", example.resolve("intralogistics.roqme").toString(),
+                "--trace", trace.toString()));
+        String[] lines = roqme.out().split("\n");
+        assertEquals("tick,time,safety,mission_completion,power_autonomy,fired", lines[0]);
+        assertTrue(roqme.out(), lines[1].endsWith(",batteryHigh"));
+        assertTrue(roqme.out(), lines[2].endsWith(",batteryLow:batteryHalf")); // 25 < LowBattery 30 and < 60
+        Cli miron = new Cli();
+        assertEquals(miron.err.toString(), 0, miron.run("roqme", "replay", example.resolve("intralogistics.miron").toString(),
+                "--trace", trace.toString()));
+        assertEquals(roqme.out(), miron.out());
+    }
+
+    /** A source with an error is refused with file:line:col, by replay (1) and run (2), before anything runs. */
+    @Test
+    public void aSourceWithAnErrorIsRefusedWithItsPosition() throws Exception {
+        Path bad = dir.resolve("bad.roqme");
+        Files.writeString(bad, "roqme Bad\n\nproperty safety\nobservation near : Nope < 1 undermines safety\n");
+        Cli replay = new Cli();
+        assertEquals(1, replay.run("roqme", "replay", bad.toString(), "--trace", p("worked.trace.jsonl")));
+        assertTrue(replay.err.toString(), replay.err.toString().matches("(?s).*bad\\.roqme:4:\\d+: error.*Nope.*"));
+        Cli run = new Cli();
+        assertEquals(2, run.run("roqme", "run", bad.toString()));
+        assertTrue(run.err.toString(), run.err.toString().matches("(?s).*bad\\.roqme:4:\\d+: error.*Nope.*"));
     }
 }

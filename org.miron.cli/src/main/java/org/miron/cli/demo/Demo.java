@@ -3,6 +3,7 @@ package org.miron.cli.demo;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.miron.executor.NodeStatus;
@@ -14,14 +15,17 @@ import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.live.LiveExecutor;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.player.ScenarioPlayer;
+import org.miron.runtime.roqme.LiveProvider;
+import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
 
 /**
- * The whole MIRoN loop in one JVM: broker, adaptation engine, mock skill interface, BT executor
- * and a scenario player standing in for RoQME. The robot runs its mission over and over while the
- * scenario plays; every perception, adaptation and skill is told on the console, and at the end a
- * timeline report is written.
+ * The whole MIRoN loop in one JVM: broker, RoQME QoS Metrics Provider, adaptation engine, mock
+ * skill interface, BT executor and a scenario player publishing the robot's contexts. The robot runs
+ * its mission over and over while the scenario plays; every perception, fired observation, metric
+ * move, adaptation and skill is told on the console, and at the end a timeline report is written.
+ * Without a provider the scenario's own estimate lines are the metrics.
  */
 public final class Demo {
     /** What a run produced. */
@@ -38,6 +42,8 @@ public final class Demo {
     private double timeScale = 1.0;
     private String backend;
     private long settleMs = 1500;
+    private CompiledModel roqme;
+    private long periodMs = 1000;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
             PrintWriter out) {
@@ -53,6 +59,16 @@ public final class Demo {
     /** Plays the scenario faster (0.5) or slower (2.0); the skills keep their durations. */
     public Demo timeScale(double scale) {
         this.timeScale = scale;
+        return this;
+    }
+
+    /**
+     * Runs the RoQME provider on this model (null: none, the scenario's estimates are the metrics),
+     * ticking every periodMs of scenario time: its clock is scaled with the scenario's.
+     */
+    public Demo provider(CompiledModel model, long periodMs) {
+        this.roqme = model;
+        this.periodMs = periodMs;
         return this;
     }
 
@@ -72,7 +88,9 @@ public final class Demo {
         try (Broker broker = new Broker(endpoints).start();
                 SkillInterfaceMock skillInterface = new SkillInterfaceMock(endpoints.skill(), endpoints.skillEvents(),
                         skills).start();
-                Engine engine = Engine.create(options)) {
+                Engine engine = Engine.create(options);
+                LiveProvider provider = roqme == null ? null
+                        : new LiveProvider(roqme, periodMs, 5000, endpoints.busIn(), endpoints.busOut()).timeScale(timeScale)) {
             Narrator narrator = new Narrator(out, engine.model());
             try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
                     .start();
@@ -82,6 +100,14 @@ public final class Demo {
                 out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
                         + executor.tree().formatVersion() + "; the engine decides with the " + engine.backendName()
                         + " backend.");
+                if (provider != null) {
+                    out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
+                            + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
+                    provider.start();
+                    if (!provider.awaitSubscribed(10_000)) {
+                        throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");
+                    }
+                }
                 engine.start();
                 Thread robot = new Thread(() -> {
                     while (!scenarioOver.get()) {
@@ -106,5 +132,9 @@ public final class Demo {
                 return new Result(adaptations, skillInterface.history().size(), missions.get(), report, decisionLog);
             }
         }
+    }
+
+    private List<String> properties() {
+        return roqme.model().beliefs().stream().filter(b -> b.isProperty()).map(b -> b.name()).toList();
     }
 }

@@ -22,6 +22,7 @@ final class Narrator implements StatusListener {
     private final PrintWriter out;
     private final IoModel model;
     private volatile BusRecorder clock;
+    private final RoqmeNarration roqme = new RoqmeNarration(this::say);
 
     Narrator(PrintWriter out, IoModel model) {
         this.out = out;
@@ -34,8 +35,8 @@ final class Narrator implements StatusListener {
 
     void onBusEvent(BusRecorder.Event e) {
         JsonNode body = e.body();
-        if (e.topic().equals(Topics.ESTIMATE) || e.topic().equals(Topics.CONTEXT)) {
-            say(e.at(), "RoQME ", body.path("name").asText() + " = " + body.path("value").asText());
+        if (roqme.onEvent(e)) {
+            return; // contexts, fired observations and the metrics they move (RoqmeNarration)
         } else if (e.topic().equals(Topics.DECISION)) {
             for (JsonNode changed : body.path("changed")) {
                 String vp = changed.asText();

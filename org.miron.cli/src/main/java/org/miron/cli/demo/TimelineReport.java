@@ -14,7 +14,8 @@ import org.miron.runtime.bus.Topics;
 
 /**
  * A self-contained HTML page (inline SVG, no scripts) that shows why the robot adapted: the QoS
- * metrics, the contexts and the engine's decisions on one time axis, and a table of every
+ * metrics (the provider's estimate curves, with a mark where an observation fired), the fired
+ * observations, the contexts and the engine's decisions on one time axis, and a table of every
  * adaptation with the inputs the engine saw when it made it.
  */
 public final class TimelineReport {
@@ -35,6 +36,11 @@ public final class TimelineReport {
     private final Map<String, List<Point>> decisions = new LinkedHashMap<>();
     private final List<String[]> adaptations = new ArrayList<>();
     private final List<Long> problems = new ArrayList<>();
+    /** Fired observations by name: when, and what each did ("undermines safety (HIGH)"). */
+    private final Map<String, List<Long>> observations = new LinkedHashMap<>();
+    private final Map<String, String> observationEffects = new LinkedHashMap<>();
+    /** Event contexts (eventtype) by name: when each occurred. */
+    private final Map<String, List<Long>> eventContexts = new LinkedHashMap<>();
 
     public TimelineReport(String title, List<BusRecorder.Event> events, long end) {
         this.title = title;
@@ -44,6 +50,12 @@ public final class TimelineReport {
             JsonNode body = e.body();
             if (e.topic().equals(Topics.ESTIMATE)) {
                 add(metrics, body.path("name").asText(), e.at(), body.path("value"));
+            } else if (e.topic().equals(Topics.OBSERVATION)) {
+                String name = body.path("name").asText();
+                observations.computeIfAbsent(name, k -> new ArrayList<>()).add(e.at());
+                observationEffects.computeIfAbsent(name, k -> effects(body.path("actions")));
+            } else if (e.topic().equals(Topics.CONTEXT) && body.path("type").asText().equals("event")) {
+                eventContexts.computeIfAbsent(body.path("name").asText(), k -> new ArrayList<>()).add(e.at());
             } else if (e.topic().equals(Topics.CONTEXT)) {
                 add(contexts, body.path("name").asText(), e.at(), body.path("value"));
             } else if (e.topic().equals(Topics.DECISION)) {
@@ -67,11 +79,22 @@ public final class TimelineReport {
         }
     }
 
+    private static String effects(JsonNode actions) {
+        List<String> parts = new ArrayList<>();
+        for (JsonNode a : actions) {
+            String target = a.path(a.has("belief") ? "belief" : a.has("var") ? "var" : "timer").asText();
+            String strength = a.path("strength").asText("");
+            parts.add(a.path("kind").asText() + " " + target + (strength.isEmpty() ? "" : " (" + strength + ")"));
+        }
+        return String.join(", ", parts);
+    }
+
     private static String inputsOf(JsonNode inputs) {
         List<String> parts = new ArrayList<>();
         inputs.fields().forEachRemaining(f -> {
             if (!f.getKey().endsWith("_known") && !f.getKey().contains("_input") && !f.getKey().endsWith("_current")) {
-                parts.add(f.getKey() + " = " + f.getValue().asText());
+                JsonNode v = f.getValue();
+                parts.add(f.getKey() + " = " + (v.isFloatingPointNumber() ? fmt(v.asDouble()) : v.asText()));
             }
         });
         return String.join(", ", parts);
@@ -92,9 +115,21 @@ public final class TimelineReport {
                 .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
                 .append(" adaptations in ").append(seconds(end)).append(" s")
                 .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");
-        out.append("<h2>QoS metrics</h2>\n").append(lineChart(metrics, 0, 1));
-        if (!contexts.isEmpty()) {
+        out.append("<h2>QoS metrics</h2>\n<p>The estimates the engine received; a dotted line marks a fired "
+                + "observation.</p>\n").append(lineChart(metrics, 0, 1));
+        if (!observations.isEmpty()) {
+            out.append("<h2>Observations fired</h2>\n").append(dotLanes(observations, name -> name + ": " + observationEffects.get(name)))
+                    .append("<table><tr><th>observation</th><th>what it does</th><th>fired at (s)</th></tr>\n");
+            observations.forEach((name, times) -> out.append("<tr><td>").append(escape(name)).append("</td><td>")
+                    .append(escape(observationEffects.get(name))).append("</td><td>")
+                    .append(String.join(", ", times.stream().map(TimelineReport::seconds).toList())).append("</td></tr>\n"));
+            out.append("</table>\n");
+        }
+        if (!contexts.isEmpty() || !eventContexts.isEmpty()) {
             out.append("<h2>Contexts</h2>\n").append(lanes(contexts));
+        }
+        if (!eventContexts.isEmpty()) {
+            out.append(dotLanes(eventContexts, name -> name + " occurred"));
         }
         out.append("<h2>Decisions</h2>\n").append(lanes(decisions));
         out.append("<h2>Adaptations</h2>\n<table><tr><th>time (s)</th><th>variation point</th><th>from</th><th>to</th>"
@@ -134,7 +169,34 @@ public final class TimelineReport {
                     .append("\" stroke-width=\"2\"/>\n");
             svg.append(text(10, 20 + 16 * (color - 1), "start", s.getKey(), stroke));
         }
+        observationMarks(svg, height);
         return problemMarks(svg, height).append("</svg>\n").toString();
+    }
+
+    /** A dotted grey line where any observation fired, under the curves' legend. */
+    private void observationMarks(StringBuilder svg, int height) {
+        observations.values().stream().flatMap(List::stream).distinct().forEach(at -> svg.append(String.format(Locale.ROOT,
+                "<line x1=\"%.1f\" x2=\"%.1f\" y1=\"10\" y2=\"%d\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n",
+                x(at), x(at), height)));
+    }
+
+    /** One lane per name: a dot each time it occurred, with what it is (tooltip). */
+    private String dotLanes(Map<String, List<Long>> occurrences, java.util.function.UnaryOperator<String> what) {
+        int lane = 22;
+        StringBuilder svg = svgStart(occurrences.size() * lane + 30);
+        int row = 0;
+        for (Map.Entry<String, List<Long>> o : occurrences.entrySet()) {
+            int middle = row * lane + lane / 2 + 2;
+            String color = COLORS[row % COLORS.length];
+            svg.append(text(LEFT - 8, middle + 4, "end", o.getKey(), color));
+            for (long at : o.getValue()) {
+                svg.append(String.format(Locale.ROOT, "<circle cx=\"%.1f\" cy=\"%d\" r=\"4\" fill=\"%s\"><title>%s</title></circle>\n",
+                        x(at), middle, color, escape(seconds(at) + " s: " + what.apply(o.getKey()))));
+            }
+            row++;
+        }
+        axes(svg, occurrences.size() * lane);
+        return svg.append("</svg>\n").toString();
     }
 
     /** One lane per series: the value written in a band that lasts until the next value. */
@@ -155,15 +217,29 @@ public final class TimelineReport {
                 String label = p.value().isNumber() ? fmt(p.value().asDouble()) : p.value().asText();
                 long until = nextChange(s.getValue(), p);
                 String fill = colorOf.computeIfAbsent(label, k -> COLORS[colorOf.size() % COLORS.length]);
+                double width = Math.max(1, x(until) - x(p.at()));
                 svg.append(String.format(Locale.ROOT,
-                        "<rect x=\"%.1f\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\" fill-opacity=\"0.25\" stroke=\"%s\"/>\n",
-                        x(p.at()), top + 4, Math.max(1, x(until) - x(p.at())), lane - 6, fill, fill));
-                svg.append(text(x(p.at()) + 4, top + 18, "start", label));
+                        "<rect x=\"%.1f\" y=\"%d\" width=\"%.1f\" height=\"%d\" fill=\"%s\" fill-opacity=\"0.25\" stroke=\"%s\">"
+                                + "<title>%s</title></rect>\n",
+                        x(p.at()), top + 4, width, lane - 6, fill, fill, escape(s.getKey() + " = " + label + " from " + seconds(p.at()) + " s")));
+                String shown = fitted(label, width);
+                if (!shown.isEmpty()) {
+                    svg.append(text(x(p.at()) + 4, top + 18, "start", shown));
+                }
             }
             row++;
         }
         axes(svg, series.size() * lane);
         return svg.append("</svg>\n").toString();
+    }
+
+    /** The label, shortened with an ellipsis to fit a band of that width (about 7 px a character), or "". */
+    private static String fitted(String label, double width) {
+        int chars = (int) ((width - 8) / 7);
+        if (chars >= label.length()) {
+            return label;
+        }
+        return chars >= 3 ? label.substring(0, chars - 1) + "…" : "";
     }
 
     /** When the value of {@code p} stops holding: the next point with another value, or the end. */

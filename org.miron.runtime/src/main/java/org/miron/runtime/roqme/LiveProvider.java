@@ -3,7 +3,10 @@ package org.miron.runtime.roqme;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
@@ -39,13 +42,22 @@ public final class LiveProvider implements AutoCloseable {
     private final CompiledModel model;
     private final long periodMs;
     private final long statusIntervalMs;
-    private final LongSupplier clock = System::currentTimeMillis;
+    private LongSupplier clock = System::currentTimeMillis;
+    private double timeScale = 1.0;
     private final BlockingQueue<Arrival> inbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
     private final ProviderStatus status = new ProviderStatus();
     private final ContextDecoder decoder;
     private final BusClient bus;
     private final Thread thread;
     private final CountDownLatch stopped = new CountDownLatch(1);
+    private final CountDownLatch subscribed = new CountDownLatch(1);
+    /** The last contexts received, to drop the broker's replayed copies (bus thread only). */
+    private final Map<String, Boolean> recent = new LinkedHashMap<>(64, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, Boolean> eldest) {
+            return size() > 1024;
+        }
+    };
     private volatile boolean running = true;
     private long last; // provider thread only: its clock, never going back
     private long nextStatus; // provider thread only
@@ -64,7 +76,8 @@ public final class LiveProvider implements AutoCloseable {
         this.periodMs = periodMs;
         this.statusIntervalMs = statusIntervalMs;
         this.decoder = new ContextDecoder(model);
-        this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived);
+        this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived)
+                .onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "roqme-provider");
     }
 
@@ -82,6 +95,21 @@ public final class LiveProvider implements AutoCloseable {
         return this;
     }
 
+    /**
+     * Runs the provider on a scaled clock, for a demo that plays its scenario faster (0.4: every
+     * model second lasts 0.4 s): the period, survivals, windows and timers stay in model time, so
+     * the estimates follow the same curve as at scale 1. Call before {@link #start}.
+     */
+    public LiveProvider timeScale(double scale) {
+        if (!(scale > 0) || Double.isInfinite(scale)) {
+            throw new IllegalArgumentException("the time scale must be a positive number, got " + scale);
+        }
+        long origin = System.currentTimeMillis();
+        this.timeScale = scale;
+        this.clock = () -> origin + (long) ((System.currentTimeMillis() - origin) / scale);
+        return this;
+    }
+
     public LiveProvider start() {
         bus.start();
         thread.start();
@@ -93,7 +121,30 @@ public final class LiveProvider implements AutoCloseable {
         return bus.awaitReady(timeoutMs);
     }
 
+    /**
+     * Waits until the provider's subscription to the contexts is live and the broker's cache of
+     * them replayed: a context published after that reaches it exactly once (one published while
+     * subscribing may arrive twice, live and from the cache, which matters to a trend window).
+     */
+    public boolean awaitSubscribed(long timeoutMs) throws InterruptedException {
+        return subscribed.await(timeoutMs, TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Whether body is a copy of a context seen lately: the broker replays its cache of a topic to
+     * a late subscriber through every matching pipe, so the provider may get a sample twice. A
+     * sample with the same {@code time} and value is the same sample; counting it again would
+     * break a trend (`decreasing`) or count an `update` twice. Bodies without a time are all kept.
+     */
+    private boolean repeated(byte[] body) {
+        String text = new String(body, StandardCharsets.UTF_8);
+        return text.contains("\"time\"") && recent.put(text, Boolean.TRUE) != null;
+    }
+
     private void arrived(String topic, byte[] body) {
+        if (repeated(body)) {
+            return;
+        }
         if (!inbox.offer(new Arrival(body, clock.getAsLong())) && status.overflow.incrementAndGet() % 1000 == 1) {
             LOG.warning("roqme: provider behind, dropping contexts");
         }
@@ -133,7 +184,7 @@ public final class LiveProvider implements AutoCloseable {
     private void round(Provider p) throws InterruptedException {
         long now = clock.getAsLong();
         long wait = Math.min(p.nextTickTime(), Math.min(p.nextDue(), nextStatus)) - now;
-        Arrival a = wait > 0 ? inbox.poll(wait, TimeUnit.MILLISECONDS) : inbox.poll();
+        Arrival a = wait > 0 ? inbox.poll(Math.max(1, (long) Math.ceil(wait * timeScale)), TimeUnit.MILLISECONDS) : inbox.poll();
         while (a != null) {
             last = Math.max(last, a.time()); // the provider's clock never goes back
             input(p, a, last);

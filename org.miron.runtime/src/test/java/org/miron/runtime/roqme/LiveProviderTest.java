@@ -96,6 +96,32 @@ public class LiveProviderTest {
         assertTrue("the provider receives contexts", provider.contexts() > before);
     }
 
+    /**
+     * A late subscriber to the contexts makes the broker replay its cache through every matching
+     * pipe: the provider gets a copy of the last sample, the same body, which it must not count
+     * again (it would break a trend window or count an update twice).
+     */
+    @Test
+    public void theBrokersReplayedCopyOfASampleCountsOnce() throws Exception {
+        startBus();
+        provider = new LiveProvider(model, PERIOD, 5000, ep.busIn(), ep.busOut()).start();
+        assertTrue(provider.awaitSubscribed(TIMEOUT));
+        String sample = "{\"name\":\"BatteryLevel\",\"namespace\":\"Intralogistics\",\"type\":\"number\",\"value\":50,\"time\":1}";
+        input.publish(Topics.CONTEXT, sample);
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (provider.contexts() == 0 && System.currentTimeMillis() < end) {
+            Thread.sleep(20);
+        }
+        assertEquals(1, provider.contexts());
+        try (BusProbe late = new BusProbe(ep.busOut(), Topics.CONTEXT)) {
+            assertNotNull("the late subscriber gets the replay", late.await(Topics.CONTEXT, b -> b.path("time").asLong() == 1, TIMEOUT));
+            input.publish(Topics.CONTEXT, sample.replace("\"time\":1", "\"time\":2"));
+            assertNotNull(late.await(Topics.CONTEXT, b -> b.path("time").asLong() == 2, TIMEOUT));
+            Thread.sleep(300); // the provider's copy of the replay came before the second sample
+            assertEquals("the replayed copy is dropped, the new sample counts", 2, provider.contexts());
+        }
+    }
+
     @Test
     public void badContextsAreCountedReportedAndDropped() throws Exception {
         startBus();
