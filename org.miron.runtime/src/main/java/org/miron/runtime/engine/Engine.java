@@ -30,6 +30,7 @@ public final class Engine implements AutoCloseable {
     private final EngineStatus status;
     private final Map<String, Integer> applied = new LinkedHashMap<>(); // solve thread only
     private final RuleActivity activity; // null without a decision section
+    private final DecisionExplainer explainer; // null with activity
     private volatile Map<String, Object> appliedValues = Map.of();
     private BusClient bus;
     private ParameterSender sender;
@@ -48,6 +49,7 @@ public final class Engine implements AutoCloseable {
         this.decoder = new InputDecoder(model, state);
         this.status = new EngineStatus(model.model(), backend.name());
         this.activity = activity(model);
+        this.explainer = activity == null ? null : new DecisionExplainer(model, activity);
         Map<String, Object> initial = new LinkedHashMap<>();
         for (VariationPoint vp : model.varpoints()) {
             if (vp.initial() != null) { // the robot starts with it: applied before any decision
@@ -272,7 +274,12 @@ public final class Engine implements AutoCloseable {
         entry.set("dropped", Json.MAPPER.valueToTree(r.dropped()));
         entry.set("held", held);
         if (act != null) {
-            entry.set("applied", Json.MAPPER.valueToTree(act.applied()));
+            entry.set("applied", explainer.applied(act));
+            ObjectNode why = entry.putObject("why");
+            for (JsonNode name : changed) {
+                VariationPoint vp = model.varpoint(name.asText()).orElseThrow();
+                why.set(vp.name(), explainer.explain(act, model.varpoints().indexOf(vp)));
+            }
         }
         if (!r.dropped().isEmpty()) {
             status.count("droppedRules");

@@ -1,6 +1,5 @@
 package org.miron.runtime.engine;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
@@ -12,12 +11,19 @@ import java.util.Map;
  * for a varpoint nobody asks: it keeps its applied (or initial) value.
  */
 final class RuleActivity {
-    private final NativeModel m;
-    private final double[] param;
-    private final int[] assign;
+    final NativeModel m;
+    /** The last evaluation's parameters by slot and decisions by varpoint ({@link DecisionExplainer} reads them). */
+    final double[] param;
+    final int[] assign;
 
-    /** The decisions of one solve, in the model's terms. */
-    record Activity(List<String> applied, boolean[] asked) {
+    /**
+     * One decision's rules and varpoints.
+     *
+     * @param holds per rule (priority order): its contexts are known and its condition holds
+     * @param kept  per rule: not dropped for higher ones
+     * @param asked per varpoint: something asks to change it
+     */
+    record Activity(boolean[] holds, boolean[] kept, boolean[] asked) {
     }
 
     RuleActivity(IoModel io) {
@@ -41,27 +47,30 @@ final class RuleActivity {
         boolean[] asked = new boolean[m.varpointCount];
         for (int v = 0; v < m.varpointCount; v++) {
             assign[v] = decisions.getOrDefault(m.decisionNames[v], 0);
-            asked[v] = m.utilityMetric[v].length > 0 || param[m.inputSlot[v]] == 1;
+            asked[v] = m.utilityMetric[v].length > 0 || overridden(v);
         }
-        List<String> applied = new ArrayList<>();
-        boolean[] holds = new boolean[m.ruleNames.length];
-        for (int r = 0; r < m.ruleNames.length; r++) {
+        int rules = m.ruleNames.length;
+        boolean[] holds = new boolean[rules];
+        boolean[] kept = new boolean[rules];
+        for (int r = 0; r < rules; r++) {
             for (int v : m.ruleConditionVars[r]) {
                 asked[v] = true;
             }
             holds[r] = known(r) && m.pool.holds(m.ruleCondition[r], param, assign);
-            if (holds[r]) {
-                applied.add(m.ruleNames[r]);
-            }
+            kept[r] = !dropped.contains(m.ruleNames[r]);
         }
         for (NativeModel.Constraint k : m.constraints) {
-            if (holds[k.rule()] && !dropped.contains(m.ruleNames[k.rule()])) {
+            if (holds[k.rule()] && kept[k.rule()]) {
                 for (int v : k.overrides()) {
                     asked[v] = true;
                 }
             }
         }
-        return new Activity(applied, asked);
+        return new Activity(holds, kept, asked);
+    }
+
+    boolean overridden(int varpoint) {
+        return param[m.inputSlot[varpoint]] == 1;
     }
 
     private boolean known(int rule) {

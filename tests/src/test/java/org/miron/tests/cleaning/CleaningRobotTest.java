@@ -2,7 +2,6 @@ package org.miron.tests.cleaning;
 
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertNotEquals;
-import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -134,7 +133,9 @@ public class CleaningRobotTest {
         assertEquals("SOLVED", d.path("outcome").asText());
         assertEquals("[\"filthy\"]", d.path("dropped").toString());
         assertNotEquals("a flat battery never deep-cleans: " + d, "deep", d.path("decisions").path("cleaning").asText());
-        assertEquals("[\"battery\",\"filthy\"]", d.path("applied").toString());
+        assertEquals("[{\"rule\":\"battery\",\"inputs\":{\"energy\":0.2}},"
+                + "{\"rule\":\"filthy\",\"inputs\":{\"cleanliness\":0.2,\"occupancy\":\"EMPTY\"}}]",
+                d.path("applied").toString());
         JsonNode status = engine.status().toJson(engine.applied());
         assertTrue(status.toString(), status.path("counters").path("droppedRules").asLong() > 0);
         assertEquals("conflicting rules are no unsatisfiable model", "ok", status.path("state").asText());
@@ -147,14 +148,30 @@ public class CleaningRobotTest {
         occupancy("EMPTY");
         JsonNode d = awaitDecision(x -> x.path("decisions").path("cleaning").asText().equals("deep"));
         assertEquals("[]", d.path("dropped").toString());
-        assertEquals("[\"filthy\"]", d.path("applied").toString());
+        assertEquals("filthy", d.path("applied").path(0).path("rule").asText());
+        assertEquals(1, d.path("applied").size());
+        assertEquals("rule filthy (cleanliness = 0.2, occupancy = EMPTY)", d.path("why").path("cleaning").path("because").asText());
+    }
+
+    /**
+     * Weights need: energy 0.2, cleanliness and quietness 0.5. quick scores 75 (energy++,
+     * quietness++, cleanliness-), deep 61.7, normal (all neutral) 60: quick, against deep.
+     */
+    @Test
+    public void theFirstDecisionSaysWhichImpactsMadeItBest() throws Exception {
+        start("cleaning");
+        JsonNode first = awaitDecision(x -> true);
+        assertEquals("quick", first.path("decisions").path("cleaning").asText());
+        JsonNode why = first.path("why").path("cleaning");
+        assertEquals(first.toString(), "best for energy +4, quietness +4 vs deep (cleanliness -4)", why.path("because").asText());
+        assertEquals("deep", why.path("runnerUp").asText());
     }
 
     @Test
     public void aParameterNobodyAsksForIsNeverSent() throws Exception {
         start("cleaning");
         estimate("energy", 0.2);
-        JsonNode d = awaitDecision(x -> x.path("applied").toString().contains("battery"));
+        JsonNode d = awaitDecision(x -> x.path("applied").toString().contains("\"battery\""));
         assertTrue("baseSpeed held: " + d, d.path("held").toString().contains("baseSpeed"));
         assertTrue("no value decided for baseSpeed: " + d, d.path("decisions").path("baseSpeed").isNull());
         Thread.sleep(300); // a change-parameter query would have been acknowledged by now
@@ -171,9 +188,9 @@ public class CleaningRobotTest {
         Optional<ParameterChange> slow = skills.awaitChange(c -> c.parameter().equals("maxVelocity"), 10_000);
         assertTrue("the people rule asks for baseSpeed <= 0.3", slow.isPresent());
         assertTrue(slow.get().toString(), slow.get().values().path("1").asDouble() <= 0.3);
-        JsonNode crowded = awaitDecision(x -> x.path("applied").toString().contains("people"));
+        JsonNode crowded = awaitDecision(x -> x.path("applied").toString().contains("\"people\""));
         assertEquals("quick", crowded.path("decisions").path("cleaning").asText());
-        assertNotNull(crowded.path("changed"));
+        assertEquals("rule people (occupancy = CROWDED)", crowded.path("why").path("baseSpeed").path("because").asText());
         assertEquals("only the crowded room changed the speed", 1, skills.history().size());
     }
 }

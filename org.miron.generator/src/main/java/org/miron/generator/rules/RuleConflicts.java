@@ -1,0 +1,263 @@
+package org.miron.generator.rules;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.util.ArrayList;
+import java.util.BitSet;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.miron.dsl.miron.Rule;
+import org.miron.generator.AdaptationModel;
+import org.miron.generator.SampledVariationPoint;
+
+/**
+ * The design-time rule check: over sampled situations (every combination of the values
+ * {@link Situations} picks per input: each threshold the rules compare it with, just below and
+ * above, and the values between; every enum literal, both Booleans), which rules apply, and does
+ * the engine's priority search (keep rule k when it can hold with the higher rules kept so far)
+ * have to drop any? A dropped rule gives a conflict: the smallest set of higher kept rules it
+ * cannot hold with, plus the situation as a witness. Also rules that never apply and rules dropped
+ * whenever they apply (shadowed). Bounded in time: past the budget the remaining situations are
+ * not tried and every finding says so.
+ */
+public final class RuleConflicts {
+    /** What the check found about one rule of the model. */
+    public record Finding(Rule rule, String code, String message) {
+    }
+
+    private final AdaptationModel m;
+    private final long budgetNanos;
+    private final List<AdaptationModel.TranslatedRule> rules;
+    private final TreeEvaluator eval;
+    private final Map<String, Integer> sizes = new HashMap<>();
+    /** Per rule: its consequences' constraints and the varpoints each reads (condition included). */
+    private final List<List<JsonNode>> bodies = new ArrayList<>();
+    private final List<List<List<String>>> bodyVars = new ArrayList<>();
+    private final boolean[] conditionReadsVarpoints;
+    private final Situations situations;
+
+    public RuleConflicts(AdaptationModel m, long budgetMillis) {
+        this.m = m;
+        this.budgetNanos = budgetMillis * 1_000_000L;
+        this.rules = m.rules;
+        Map<String, double[]> values = new HashMap<>();
+        for (SampledVariationPoint vp : m.varpoints) {
+            double[] v = new double[vp.size()];
+            for (int i = 0; i < v.length; i++) {
+                v[i] = vp.isEnum() ? i : vp.values.get(i).doubleValue();
+            }
+            values.put(vp.name, v);
+            sizes.put(vp.name, vp.size());
+        }
+        eval = new TreeEvaluator(values);
+        conditionReadsVarpoints = new boolean[rules.size()];
+        for (int r = 0; r < rules.size(); r++) {
+            AdaptationModel.TranslatedRule rule = rules.get(r);
+            Set<String> condVars = new LinkedHashSet<>();
+            varpoints(rule.conditionTree(), condVars);
+            conditionReadsVarpoints[r] = !condVars.isEmpty();
+            List<JsonNode> b = new ArrayList<>();
+            List<List<String>> vars = new ArrayList<>();
+            for (AdaptationModel.Consequence c : rule.consequences()) {
+                Set<String> reads = new LinkedHashSet<>(condVars);
+                varpoints(c.tree(), reads);
+                b.add(c.tree());
+                vars.add(new ArrayList<>(reads));
+            }
+            bodies.add(b);
+            bodyVars.add(vars);
+        }
+        situations = new Situations(m);
+    }
+
+    private static void varpoints(JsonNode n, Set<String> into) {
+        if (n == null) {
+            return;
+        }
+        if (n.has("index")) {
+            into.add(n.get("index").asText());
+        } else if (n.has("value")) {
+            into.add(n.get("value").asText());
+        }
+        n.path("args").forEach(a -> varpoints(a, into));
+    }
+
+    public List<Finding> analyse() {
+        int n = rules.size();
+        int[] applies = new int[n];
+        int[] dropped = new int[n];
+        Map<String, Conflict> conflicts = new LinkedHashMap<>();
+        Map<Integer, Set<Integer>> overriders = new HashMap<>();
+        long start = System.nanoTime();
+        long total = situations.count();
+        long tried = 0;
+        for (long s = 0; s < total; s++) {
+            if (System.nanoTime() - start > budgetNanos) {
+                break;
+            }
+            tried++;
+            Map<String, Double> in = situations.get(s);
+            BitSet applying = new BitSet();
+            for (int r = 0; r < n; r++) {
+                if (conditionReadsVarpoints[r] || eval.holds(rules.get(r).conditionTree(), in, Map.of())) {
+                    applying.set(r);
+                    applies[r]++;
+                }
+            }
+            BitSet kept = new BitSet();
+            for (int r = applying.nextSetBit(0); r >= 0; r = applying.nextSetBit(r + 1)) {
+                kept.set(r);
+                if (feasible(kept, in)) {
+                    continue;
+                }
+                kept.clear(r);
+                dropped[r]++;
+                int loser = r;
+                BitSet set = minimal(kept.get(0, r), r, in);
+                set.stream().filter(x -> x != loser)
+                        .forEach(x -> overriders.computeIfAbsent(loser, k -> new LinkedHashSet<>()).add(x));
+                conflicts.computeIfAbsent(set.toString(), k -> new Conflict(set, in));
+            }
+        }
+        boolean cut = tried < total;
+        String note = cut ? " (rule check stopped after " + budgetNanos / 1_000_000 + " ms: " + tried + " of " + total
+                + " situations tried)" : "";
+        List<Finding> findings = new ArrayList<>();
+        boolean[] shadowed = new boolean[n];
+        for (int r = 0; r < n; r++) {
+            String name = rules.get(r).rule().getName();
+            if (applies[r] == 0) {
+                findings.add(new Finding(rules.get(r).rule(), "miron.rule-never-applies", "rule " + name
+                        + " never applies: its condition is false in every situation tried (" + tried + ")" + note));
+            } else if (dropped[r] == applies[r] && overriders.get(r) == null) {
+                shadowed[r] = true;
+                findings.add(new Finding(rules.get(r).rule(), "miron.rule-conflict", "rule " + name
+                        + " can never hold: its consequences contradict each other" + note));
+            } else if (dropped[r] == applies[r]) {
+                shadowed[r] = true;
+                findings.add(new Finding(rules.get(r).rule(), "miron.rule-shadowed", "rule " + name
+                        + " is always overridden by " + names(overriders.get(r)) + ": whenever it applies it conflicts with "
+                        + (overriders.get(r).size() == 1 ? "that higher rule" : "those higher rules") + note));
+            }
+        }
+        for (Conflict c : conflicts.values()) {
+            int loser = c.rules.length() - 1;
+            if (shadowed[loser] || c.rules.cardinality() < 2) {
+                continue;
+            }
+            BitSet winners = (BitSet) c.rules.clone();
+            winners.clear(loser);
+            Set<Integer> all = new LinkedHashSet<>();
+            c.rules.stream().forEach(all::add);
+            Set<Integer> win = new LinkedHashSet<>();
+            winners.stream().forEach(win::add);
+            findings.add(new Finding(rules.get(loser).rule(), "miron.rule-conflict", "rules " + names(all)
+                    + " conflict when " + situations.describe(c.witness, conditionInputs(c.rules)) + "; " + names(win)
+                    + (win.size() == 1 ? " wins" : " win") + note));
+        }
+        if (cut && findings.isEmpty() && !rules.isEmpty()) {
+            findings.add(new Finding(rules.get(0).rule(), "miron.rule-check-cut", "rule check stopped after "
+                    + budgetNanos / 1_000_000 + " ms: " + tried + " of " + total
+                    + " situations tried without a conflict; the others were not checked"));
+        }
+        return findings;
+    }
+
+    private record Conflict(BitSet rules, Map<String, Double> witness) {
+    }
+
+    /** Inputs read by the conditions of these rules, in rule order. */
+    private List<String> conditionInputs(BitSet set) {
+        Set<String> params = new LinkedHashSet<>();
+        set.stream().forEach(r -> params(rules.get(r).conditionTree(), params));
+        return new ArrayList<>(params);
+    }
+
+    private static void params(JsonNode n, Set<String> into) {
+        if (n == null) {
+            return;
+        }
+        if (n.has("param")) {
+            into.add(n.get("param").asText());
+        }
+        n.path("args").forEach(a -> params(a, into));
+    }
+
+    private String names(Set<Integer> set) {
+        List<String> names = new ArrayList<>();
+        set.forEach(r -> names.add(rules.get(r).rule().getName()));
+        if (names.size() == 1) {
+            return names.get(0);
+        }
+        return String.join(", ", names.subList(0, names.size() - 1)) + " and " + names.get(names.size() - 1);
+    }
+
+    /** The smallest subset of {@code higher} that {@code rule} cannot hold with (deletion, lowest first). */
+    private BitSet minimal(BitSet higher, int rule, Map<String, Double> in) {
+        BitSet set = (BitSet) higher.clone();
+        set.set(rule);
+        for (int h = higher.length() - 1; h >= 0; h--) {
+            if (!set.get(h) || h == rule) {
+                continue;
+            }
+            set.clear(h);
+            if (feasible(set, in)) {
+                set.set(h);
+            }
+        }
+        return set;
+    }
+
+    /** Whether some assignment of the varpoints satisfies every consequence of these rules. */
+    private boolean feasible(BitSet set, Map<String, Double> in) {
+        List<JsonNode> constraints = new ArrayList<>();
+        List<List<String>> reads = new ArrayList<>();
+        List<JsonNode> guards = new ArrayList<>();
+        Set<String> vars = new LinkedHashSet<>();
+        set.stream().forEach(r -> {
+            for (int c = 0; c < bodies.get(r).size(); c++) {
+                constraints.add(bodies.get(r).get(c));
+                reads.add(bodyVars.get(r).get(c));
+                guards.add(rules.get(r).conditionTree());
+                vars.addAll(bodyVars.get(r).get(c));
+            }
+        });
+        List<String> order = new ArrayList<>(vars);
+        return search(order, 0, new HashMap<>(), constraints, reads, guards, in);
+    }
+
+    private boolean search(List<String> order, int depth, Map<String, Integer> assign, List<JsonNode> constraints,
+            List<List<String>> reads, List<JsonNode> guards, Map<String, Double> in) {
+        for (int c = 0; c < constraints.size(); c++) {
+            if (assign.keySet().containsAll(reads.get(c)) && covers(reads.get(c), order, depth)
+                    && eval.holds(guards.get(c), in, assign) && !eval.holds(constraints.get(c), in, assign)) {
+                return false;
+            }
+        }
+        if (depth == order.size()) {
+            return true;
+        }
+        String vp = order.get(depth);
+        for (int i = 0; i < sizes.get(vp); i++) {
+            assign.put(vp, i);
+            if (search(order, depth + 1, assign, constraints, reads, guards, in)) {
+                assign.remove(vp);
+                return true;
+            }
+        }
+        assign.remove(vp);
+        return false;
+    }
+
+    /** A constraint is checked once, at the depth where its last varpoint was assigned. */
+    private static boolean covers(List<String> reads, List<String> order, int depth) {
+        int last = -1;
+        for (String v : reads) {
+            last = Math.max(last, order.indexOf(v));
+        }
+        return last == depth - 1;
+    }
+}
