@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.ServiceLoader;
 
 import org.eclipse.xtext.validation.Check;
+import org.eclipse.xtext.validation.CheckType;
 import org.eclipse.xtext.validation.ComposedChecks;
 import org.miron.dsl.miron.MironModel;
 import org.miron.dsl.miron.MironPackage;
@@ -40,9 +41,10 @@ public class MironValidator extends AbstractMironValidator {
     /**
      * Rules that can apply together and cannot hold together, rules that never apply, rules always
      * overridden (docs/issue-codes.md): warnings on the rules of this file, only when the file has
-     * no syntax error (the analysis itself skips models the generators would refuse).
+     * no syntax error (the analysis itself skips models the generators would refuse). Expensive
+     * (up to its 1 s budget): `miron check` and the language server run it, `miron generate` does not.
      */
-    @Check
+    @Check(CheckType.EXPENSIVE)
     public void checkRuleInteractions(MironModel model) {
         if (RULE_ANALYSES.isEmpty() || model.eResource() == null || !model.eResource().getErrors().isEmpty()
                 || model.getSentences().stream().noneMatch(s -> s instanceof Rule)) {

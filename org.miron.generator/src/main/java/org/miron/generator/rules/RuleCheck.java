@@ -18,9 +18,17 @@ import org.miron.generator.WeightPolicy;
 public final class RuleCheck implements RuleAnalysis {
     /** Time budget of one model's check (docs/issue-codes.md, miron.rule-check-cut). */
     public static final long BUDGET_MS = 1000;
+    /** Past this many rules the model is not analysed at all (its analysis alone would take seconds). */
+    public static final int MAX_RULES = 500;
 
     @Override
     public List<Finding> analyse(MironModel model) {
+        List<org.miron.dsl.miron.Rule> own = model.getSentences().stream()
+                .filter(org.miron.dsl.miron.Rule.class::isInstance).map(org.miron.dsl.miron.Rule.class::cast).toList();
+        if (own.size() > MAX_RULES) {
+            return List.of(new Finding(own.get(0), "miron.rule-check-cut", "rule check skipped: " + own.size()
+                    + " rules, more than " + MAX_RULES + "; conflicts between them are not ruled out"));
+        }
         List<GenerationError> errors = new ArrayList<>();
         AdaptationModel m;
         try {

@@ -38,6 +38,7 @@ public final class RuleConflicts {
     private final List<List<List<String>>> bodyVars = new ArrayList<>();
     private final boolean[] conditionReadsVarpoints;
     private final Situations situations;
+    private Feasibility search;
 
     public RuleConflicts(AdaptationModel m, long budgetMillis) {
         this.m = m;
@@ -92,35 +93,19 @@ public final class RuleConflicts {
         Map<String, Conflict> conflicts = new LinkedHashMap<>();
         Map<Integer, Set<Integer>> overriders = new HashMap<>();
         long start = System.nanoTime();
+        search = new Feasibility(eval, sizes, start + budgetNanos);
         long total = situations.count();
         long tried = 0;
         for (long s = 0; s < total; s++) {
             if (System.nanoTime() - start > budgetNanos) {
                 break;
             }
+            try {
+                situation(s, applies, dropped, conflicts, overriders);
+            } catch (Feasibility.OutOfTime e) {
+                break;
+            }
             tried++;
-            Map<String, Double> in = situations.get(s);
-            BitSet applying = new BitSet();
-            for (int r = 0; r < n; r++) {
-                if (conditionReadsVarpoints[r] || eval.holds(rules.get(r).conditionTree(), in, Map.of())) {
-                    applying.set(r);
-                    applies[r]++;
-                }
-            }
-            BitSet kept = new BitSet();
-            for (int r = applying.nextSetBit(0); r >= 0; r = applying.nextSetBit(r + 1)) {
-                kept.set(r);
-                if (feasible(kept, in)) {
-                    continue;
-                }
-                kept.clear(r);
-                dropped[r]++;
-                int loser = r;
-                BitSet set = minimal(kept.get(0, r), r, in);
-                set.stream().filter(x -> x != loser)
-                        .forEach(x -> overriders.computeIfAbsent(loser, k -> new LinkedHashSet<>()).add(x));
-                conflicts.computeIfAbsent(set.toString(), k -> new Conflict(set, in));
-            }
         }
         boolean cut = tried < total;
         String note = cut ? " (rule check stopped after " + budgetNanos / 1_000_000 + " ms: " + tried + " of " + total
@@ -164,6 +149,34 @@ public final class RuleConflicts {
                     + " situations tried without a conflict; the others were not checked"));
         }
         return findings;
+    }
+
+    /** Tries one situation: which rules apply, which the priority search drops, and why. */
+    private void situation(long s, int[] applies, int[] dropped, Map<String, Conflict> conflicts,
+            Map<Integer, Set<Integer>> overriders) {
+        int n = rules.size();
+        Map<String, Double> in = situations.get(s);
+        BitSet applying = new BitSet();
+        for (int r = 0; r < n; r++) {
+            if (conditionReadsVarpoints[r] || eval.holds(rules.get(r).conditionTree(), in, Map.of())) {
+                applying.set(r);
+                applies[r]++;
+            }
+        }
+        BitSet kept = new BitSet();
+        for (int r = applying.nextSetBit(0); r >= 0; r = applying.nextSetBit(r + 1)) {
+            kept.set(r);
+            if (feasible(kept, in)) {
+                continue;
+            }
+            kept.clear(r);
+            dropped[r]++;
+            int loser = r;
+            BitSet set = minimal(kept.get(0, r), r, in);
+            set.stream().filter(x -> x != loser)
+                    .forEach(x -> overriders.computeIfAbsent(loser, k -> new LinkedHashSet<>()).add(x));
+            conflicts.computeIfAbsent(set.toString(), k -> new Conflict(set, in));
+        }
     }
 
     private record Conflict(BitSet rules, Map<String, Double> witness) {
@@ -213,51 +226,13 @@ public final class RuleConflicts {
 
     /** Whether some assignment of the varpoints satisfies every consequence of these rules. */
     private boolean feasible(BitSet set, Map<String, Double> in) {
-        List<JsonNode> constraints = new ArrayList<>();
-        List<List<String>> reads = new ArrayList<>();
-        List<JsonNode> guards = new ArrayList<>();
-        Set<String> vars = new LinkedHashSet<>();
+        List<Feasibility.Guarded> constraints = new ArrayList<>();
         set.stream().forEach(r -> {
             for (int c = 0; c < bodies.get(r).size(); c++) {
-                constraints.add(bodies.get(r).get(c));
-                reads.add(bodyVars.get(r).get(c));
-                guards.add(rules.get(r).conditionTree());
-                vars.addAll(bodyVars.get(r).get(c));
+                constraints.add(new Feasibility.Guarded(rules.get(r).conditionTree(), bodies.get(r).get(c),
+                        bodyVars.get(r).get(c)));
             }
         });
-        List<String> order = new ArrayList<>(vars);
-        return search(order, 0, new HashMap<>(), constraints, reads, guards, in);
-    }
-
-    private boolean search(List<String> order, int depth, Map<String, Integer> assign, List<JsonNode> constraints,
-            List<List<String>> reads, List<JsonNode> guards, Map<String, Double> in) {
-        for (int c = 0; c < constraints.size(); c++) {
-            if (assign.keySet().containsAll(reads.get(c)) && covers(reads.get(c), order, depth)
-                    && eval.holds(guards.get(c), in, assign) && !eval.holds(constraints.get(c), in, assign)) {
-                return false;
-            }
-        }
-        if (depth == order.size()) {
-            return true;
-        }
-        String vp = order.get(depth);
-        for (int i = 0; i < sizes.get(vp); i++) {
-            assign.put(vp, i);
-            if (search(order, depth + 1, assign, constraints, reads, guards, in)) {
-                assign.remove(vp);
-                return true;
-            }
-        }
-        assign.remove(vp);
-        return false;
-    }
-
-    /** A constraint is checked once, at the depth where its last varpoint was assigned. */
-    private static boolean covers(List<String> reads, List<String> order, int depth) {
-        int last = -1;
-        for (String v : reads) {
-            last = Math.max(last, order.indexOf(v));
-        }
-        return last == depth - 1;
+        return search.feasible(constraints, in);
     }
 }
