@@ -39,6 +39,10 @@ public final class RuleConflicts {
     private final boolean[] conditionReadsVarpoints;
     private final Situations situations;
     private Feasibility search;
+    /** When no consequence reads an input, what the priority search drops depends only on which rules apply. */
+    private final boolean bodiesReadNoInput;
+    private final Map<BitSet, List<int[]>> outcomes = new HashMap<>();
+    private long tried;
 
     public RuleConflicts(AdaptationModel m, long budgetMillis) {
         this.m = m;
@@ -72,6 +76,15 @@ public final class RuleConflicts {
             bodyVars.add(vars);
         }
         situations = new Situations(m);
+        boolean readsInput = false;
+        for (AdaptationModel.TranslatedRule rule : rules) {
+            for (AdaptationModel.Consequence c : rule.consequences()) {
+                Set<String> params = new LinkedHashSet<>();
+                params(c.tree(), params);
+                readsInput |= !params.isEmpty();
+            }
+        }
+        bodiesReadNoInput = !readsInput;
     }
 
     private static void varpoints(JsonNode n, Set<String> into) {
@@ -95,7 +108,7 @@ public final class RuleConflicts {
         long start = System.nanoTime();
         search = new Feasibility(eval, sizes, start + budgetNanos);
         long total = situations.count();
-        long tried = 0;
+        tried = 0;
         for (long s = 0; s < total; s++) {
             if (System.nanoTime() - start > budgetNanos) {
                 break;
@@ -112,20 +125,20 @@ public final class RuleConflicts {
                 + " situations tried)" : "";
         List<Finding> findings = new ArrayList<>();
         boolean[] shadowed = new boolean[n];
-        for (int r = 0; r < n; r++) {
+        for (int r = 0; r < n && !cut; r++) { // "never" and "always" need every situation
             String name = rules.get(r).rule().getName();
             if (applies[r] == 0) {
                 findings.add(new Finding(rules.get(r).rule(), "miron.rule-never-applies", "rule " + name
-                        + " never applies: its condition is false in every situation tried (" + tried + ")" + note));
+                        + " never applies: its condition is false in every situation (" + tried + " tried)"));
             } else if (dropped[r] == applies[r] && overriders.get(r) == null) {
                 shadowed[r] = true;
                 findings.add(new Finding(rules.get(r).rule(), "miron.rule-conflict", "rule " + name
-                        + " can never hold: its consequences contradict each other" + note));
+                        + " can never hold: its consequences contradict each other"));
             } else if (dropped[r] == applies[r]) {
                 shadowed[r] = true;
                 findings.add(new Finding(rules.get(r).rule(), "miron.rule-shadowed", "rule " + name
                         + " is always overridden by " + names(overriders.get(r)) + ": whenever it applies it conflicts with "
-                        + (overriders.get(r).size() == 1 ? "that higher rule" : "those higher rules") + note));
+                        + (overriders.get(r).size() == 1 ? "that higher rule" : "those higher rules")));
             }
         }
         for (Conflict c : conflicts.values()) {
@@ -163,6 +176,14 @@ public final class RuleConflicts {
                 applies[r]++;
             }
         }
+        List<int[]> known = bodiesReadNoInput ? outcomes.get(applying) : null;
+        if (known != null) { // the same rules applied before: the same drops, an earlier witness
+            for (int[] drop : known) {
+                dropped[drop[0]]++;
+            }
+            return;
+        }
+        List<int[]> drops = new ArrayList<>();
         BitSet kept = new BitSet();
         for (int r = applying.nextSetBit(0); r >= 0; r = applying.nextSetBit(r + 1)) {
             kept.set(r);
@@ -171,12 +192,26 @@ public final class RuleConflicts {
             }
             kept.clear(r);
             dropped[r]++;
+            drops.add(new int[] {r});
             int loser = r;
             BitSet set = minimal(kept.get(0, r), r, in);
             set.stream().filter(x -> x != loser)
                     .forEach(x -> overriders.computeIfAbsent(loser, k -> new LinkedHashSet<>()).add(x));
             conflicts.computeIfAbsent(set.toString(), k -> new Conflict(set, in));
         }
+        if (bodiesReadNoInput) {
+            outcomes.put(applying, drops);
+        }
+    }
+
+    /** Situations the last {@link #analyse()} tried. */
+    public long tried() {
+        return tried;
+    }
+
+    /** Situations there are to try. */
+    public long situations() {
+        return situations.count();
     }
 
     private record Conflict(BitSet rules, Map<String, Double> witness) {

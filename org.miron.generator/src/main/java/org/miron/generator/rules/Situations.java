@@ -18,9 +18,10 @@ import org.miron.generator.AdaptationModel;
 import org.miron.generator.Names;
 
 /**
- * The situations the rule check tries: per input a rule reads, the values where rules change their
- * mind (each constant it is compared with, just below and above it, and between two of them; a
- * metric also 0 and 1), every literal of an enum, both Booleans; all combinations, numbered in
+ * The situations the rule check tries: per input a rule reads, one value per interval its
+ * thresholds (the constants the rules compare it with) cut — just below the first, each threshold,
+ * midway between two, just above the last; a metric stays in [0,1] — every literal of an enum, both
+ * Booleans; all combinations, numbered in
  * mixed radix. Contexts are known (a rule over an unknown context does not apply). Also describes
  * a situation in the model's terms, an input by the interval of its thresholds it lies in.
  */
@@ -45,10 +46,11 @@ final class Situations {
             String param = Names.metric(p);
             if (thresholds.containsKey(param)) {
                 TreeSet<Double> t = thresholds.get(param);
-                TreeSet<Double> points = numbers(t);
-                points.add(0.0);
-                points.add(1.0);
-                points.removeIf(x -> x < 0 || x > 1);
+                TreeSet<Double> points = new TreeSet<>(); // an estimate is in [0,1]: each interval's point clamped into it
+                numbers(t).forEach(x -> points.add(Math.min(1, Math.max(0, x))));
+                if (points.isEmpty()) {
+                    points.add(0.5);
+                }
                 inputs.add(new Input(param, p.getName(), array(points), array(t), null, false));
             }
         }
@@ -71,7 +73,9 @@ final class Situations {
             } else {
                 TreeSet<Double> t = thresholds.get(param);
                 TreeSet<Double> points = numbers(t);
-                points.add(0.0);
+                if (points.isEmpty()) {
+                    points.add(0.0);
+                }
                 inputs.add(new Input(param, c.getName(), array(points), array(t), null, false));
             }
         }
@@ -97,19 +101,24 @@ final class Situations {
         args.forEach(x -> collect(x, into));
     }
 
-    /** Each threshold, just below and above it, and midway between neighbours. */
+    /**
+     * One value per interval the thresholds cut: just below the first, each threshold, midway
+     * between two, just above the last (a comparison with t is decided alike in each interval).
+     */
     private static TreeSet<Double> numbers(TreeSet<Double> thresholds) {
         TreeSet<Double> points = new TreeSet<>();
         Double previous = null;
         for (double t : thresholds) {
-            double d = BELOW_ABOVE * Math.max(1, Math.abs(t));
             points.add(t);
-            points.add(t - d);
-            points.add(t + d);
-            if (previous != null) {
+            if (previous == null) {
+                points.add(t - BELOW_ABOVE * Math.max(1, Math.abs(t)));
+            } else {
                 points.add((previous + t) / 2);
             }
             previous = t;
+        }
+        if (previous != null) {
+            points.add(previous + BELOW_ABOVE * Math.max(1, Math.abs(previous)));
         }
         return points;
     }
