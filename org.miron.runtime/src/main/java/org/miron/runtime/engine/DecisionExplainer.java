@@ -126,7 +126,9 @@ final class DecisionExplainer {
         List<String> costs = new ArrayList<>();
         for (int u = 0; u < m.utilityMetric[v].length; u++) {
             double steps = (m.utilityTable[v][u][chosen] - m.utilityTable[v][u][runnerUp]) / STEP;
-            BigDecimal rounded = BigDecimal.valueOf(steps).setScale(1, RoundingMode.HALF_UP).stripTrailingZeros();
+            BigDecimal rounded = steps == 0 ? BigDecimal.ZERO : BigDecimal.valueOf(steps)
+                    .round(new java.math.MathContext(Math.abs(steps) >= 1 ? 2 : 1, RoundingMode.HALF_UP))
+                    .stripTrailingZeros(); // 2 significant digits, 1 below a step (neighbouring numbers)
             if (rounded.signum() != 0) {
                 String name = inputBySlot.get(m.utilityMetric[v][u]).name();
                 impacts.put(name, rounded);

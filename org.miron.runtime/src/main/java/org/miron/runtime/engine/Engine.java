@@ -29,6 +29,8 @@ public final class Engine implements AutoCloseable {
     private final InputDecoder decoder;
     private final EngineStatus status;
     private final Map<String, Integer> applied = new LinkedHashMap<>(); // solve thread only
+    /** Varpoints a decision has set (solve thread only): from then on the model's tie-break decides. */
+    private final java.util.Set<String> sent = new java.util.HashSet<>();
     private final RuleActivity activity; // null without a decision section
     private final DecisionExplainer explainer; // null with activity
     private volatile Map<String, Object> appliedValues = Map.of();
@@ -230,9 +232,12 @@ public final class Engine implements AutoCloseable {
     }
 
     /**
-     * Applies a decision: sends what changed, except for varpoints nothing asked to change (no
-     * impact, no applicable rule, no override), which keep their applied or initial value, or stay
-     * unset ({@code null} in the decision) when they have none.
+     * Applies a decision: sends what changed, except for parameters (varpoints not woven into the
+     * tree as variants, whose preset the executor expects at start-up) no decision has set yet that
+     * nothing asks to change (no impact, no applicable rule, no override): they keep their initial
+     * value, or stay unset ({@code null} in the decision). Once a rule has set one, the model's
+     * tie-break decides when the rule lets go: back to the preset (or the initial value), else the
+     * current value stays.
      */
     private void apply(SolveResult r, InputState.Snapshot snap, ObjectNode entry) {
         seq++;
@@ -244,7 +249,7 @@ public final class Engine implements AutoCloseable {
                 : activity.evaluate(snap.params(), r.decisions(), r.dropped());
         for (int v = 0; v < model.varpoints().size(); v++) {
             VariationPoint vp = model.varpoints().get(v);
-            if (act != null && !act.asked()[v]) {
+            if (act != null && !act.asked()[v] && !sent.contains(vp.name()) && !vp.bindingType().equals("bt")) {
                 held.add(vp.name());
                 Integer kept = applied.get(vp.name());
                 decisions.set(vp.name(), kept == null ? null : vp.values().get(kept));
@@ -260,6 +265,7 @@ public final class Engine implements AutoCloseable {
             Integer before = applied.put(vp.name(), idx);
             if (before == null || before != idx) {
                 changed.add(vp.name());
+                sent.add(vp.name());
                 state.setCurrent(vp, idx);
             }
         }

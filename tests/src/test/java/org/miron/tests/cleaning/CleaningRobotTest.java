@@ -192,5 +192,8 @@ public class CleaningRobotTest {
         assertEquals("quick", crowded.path("decisions").path("cleaning").asText());
         assertEquals("rule people (occupancy = CROWDED)", crowded.path("why").path("baseSpeed").path("because").asText());
         assertEquals("only the crowded room changed the speed", 1, skills.history().size());
+        occupancy("FEW"); // the rule lets go: back to the robot's own setting
+        Optional<ParameterChange> back = skills.awaitChange(c -> c.values().path("1").asDouble() == 0.5, 10_000);
+        assertTrue("baseSpeed returns to its initial value, history " + skills.history(), back.isPresent());
     }
 }
