@@ -27,10 +27,15 @@ import org.miron.dsl.util.Imports;
 public class MironValidator extends AbstractMironValidator {
 
     private static final MironPackage M = MironPackage.eINSTANCE;
-    /** Rule interaction checks on the class path (org.miron.generator's), if any. */
-    private static final List<RuleAnalysis> RULE_ANALYSES = ServiceLoader
-            .load(RuleAnalysis.class, MironValidator.class.getClassLoader()).stream().map(ServiceLoader.Provider::get)
-            .toList();
+    /**
+     * Rule interaction checks on the class path (org.miron.generator's), if any; none when the
+     * system property miron.ruleAnalysis is "false" (the launcher's AppCDS training run: JDK 17's
+     * archive dump crashes on a class the analysis loads, see docs/performance.md).
+     */
+    private static final List<RuleAnalysis> RULE_ANALYSES = "false".equals(System.getProperty("miron.ruleAnalysis"))
+            ? List.of()
+            : ServiceLoader.load(RuleAnalysis.class, MironValidator.class.getClassLoader()).stream()
+                    .map(ServiceLoader.Provider::get).toList();
 
     @Override
     protected List<String> allowedImports() {
