@@ -61,6 +61,12 @@ public class IoMapGenerator {
         m.contexts.forEach(c -> inputs.add(context(c)));
         ArrayNode varpoints = root.putArray("varpoints");
         m.varpoints.forEach(vp -> varpoints.add(varpoint(vp)));
+        ArrayNode rules = root.putArray("rules"); // in priority order: the first is the most important
+        for (int r = 0; r < m.rules.size(); r++) {
+            ObjectNode rule = rules.addObject();
+            rule.put("name", m.rules.get(r).rule().getName());
+            rule.put("keep", Names.keep(r + 1));
+        }
         root.set("decision", decision(m));
         return root;
     }
@@ -159,6 +165,11 @@ public class IoMapGenerator {
             node.putNull("preset");
         } else {
             node.put("preset", vp.preset);
+        }
+        if (vp.initial() < 0) {
+            node.putNull("initial");
+        } else {
+            node.put("initial", vp.initial());
         }
         node.put("decision", vp.decision());
         node.put("input", vp.input());

@@ -65,10 +65,13 @@ class MiniZincGenerator {
 		function float: miron_exp(float: x) = if x <= 709.0 then exp(x) else 0.0 / 0.0 endif;
 		function float: miron_pow(float: x, float: y) =
 		  if x > 0.0 \/ (x = 0.0 /\ y >= 0.0) \/ (x < 0.0 /\ abs(y) < 1.0e9 /\ y = int2float(floor(y))) then pow(x, y) else 0.0 / 0.0 endif;
+		% Priority: rules in declaration order, the first the most important. miron_keep_<k> (fed by the
+		% engine) is false for a rule dropped because it cannot hold together with higher ones.
 		«FOR r : m.rules»
 			% rule «r.source»
+			bool: «Names.keep(m.rules.indexOf(r) + 1)»;
 			«FOR c : r.consequences»
-				constraint «guard(r, c)» -> «c.constraint»;
+				constraint «guard(m, r, c)» -> «c.constraint»;
 			«ENDFOR»
 		«ENDFOR»
 		«ENDIF»
@@ -89,8 +92,8 @@ class MiniZincGenerator {
 		}
 	}
 
-	def private guard(AdaptationModel.TranslatedRule r, AdaptationModel.Consequence c) {
-		val parts = <String>newArrayList
+	def private guard(AdaptationModel m, AdaptationModel.TranslatedRule r, AdaptationModel.Consequence c) {
+		val parts = <String>newArrayList(Names.keep(m.rules.indexOf(r) + 1))
 		c.varpoints.forEach[parts += '''(not «input»)''']
 		r.contexts.forEach[parts += Names.known(it)]
 		parts += r.condition

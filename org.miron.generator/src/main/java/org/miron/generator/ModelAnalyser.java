@@ -52,6 +52,9 @@ public class ModelAnalyser {
                             + "' is declared in two models: MiniZinc names would clash"));
                 }
                 SampledVariationPoint sampled = sampler.sample(vp);
+                if (sampled != null && sampled.preset < 0 && sampled.initial() >= 0) {
+                    sampled.preset = sampled.initial(); // the robot's own setting is its nominal value
+                }
                 if (sampled != null) {
                     byElement.put(vp, sampled);
                     m.varpoints.add(sampled);

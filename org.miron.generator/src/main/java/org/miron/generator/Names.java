@@ -44,6 +44,14 @@ public final class Names {
         return context(context) + "_known";
     }
 
+    /**
+     * The parameter that keeps (true) or drops (false) the rule of this priority (1 = the first
+     * declared, the most important): the engine drops rules that conflict with higher ones.
+     */
+    public static String keep(int priority) {
+        return "miron_keep_" + priority;
+    }
+
     public static String utility(String varpoint, Property property) {
         return varpoint + "_y_" + qualified(property);
     }

@@ -50,6 +50,32 @@ public final class SampledVariationPoint {
         return isEnum() ? literals.size() : values.size();
     }
 
+    /**
+     * Index of the initial value ({@code := v}, validated to be one of the values; a number is
+     * taken at its nearest sampled value), -1 when none is given.
+     */
+    public int initial() {
+        org.miron.dsl.roqme.Expression init = varpoint.getInitializedTo();
+        if (init instanceof org.miron.dsl.roqme.EnumValue e) {
+            return literals.indexOf(e.getLiteral());
+        }
+        double x;
+        if (init instanceof org.miron.dsl.roqme.NumericValue n) {
+            x = n.getValue();
+        } else if (init instanceof org.miron.dsl.roqme.BooleanValue b) {
+            x = b.isValue() ? 1 : 0;
+        } else {
+            return -1;
+        }
+        int best = -1;
+        for (int i = 0; i < values.size(); i++) {
+            if (best < 0 || Math.abs(values.get(i).doubleValue() - x) < Math.abs(values.get(best).doubleValue() - x)) {
+                best = i;
+            }
+        }
+        return best;
+    }
+
     public List<String> labels() {
         List<String> labels = new ArrayList<>();
         literals.forEach(l -> labels.add(l.getName()));

@@ -56,6 +56,9 @@ final class MiniZinc {
             data.put(vp.get("inputValue").asText(), 0);
             data.put(vp.get("current").asText(), -1);
         }
+        for (JsonNode rule : io.path("rules")) {
+            data.put(rule.get("keep").asText(), true); // every rule kept, as the engine's first solve
+        }
         return data;
     }
 

@@ -41,7 +41,7 @@ final class Narrator implements StatusListener {
             for (JsonNode changed : body.path("changed")) {
                 String vp = changed.asText();
                 say(e.at(), "ADAPT ", vp + " -> " + body.path("decisions").path(vp).asText() + where(vp)
-                        + "   (" + because(body.path("inputs")) + ")");
+                        + why(body, vp));
             }
         } else if (e.topic().equals(Topics.STATUS) && body.path("state").asText().equals("degraded")) {
             say(e.at(), "ENGINE", "degraded: " + body.path("lastError").path("message").asText()
@@ -62,6 +62,20 @@ final class Narrator implements StatusListener {
             case "btport" -> " (blackboard {" + varpoint + "})";
             default -> "";
         };
+    }
+
+    /** The engine's explanation (miron.decision's why, docs/wire-formats.md), else the metrics. */
+    private static String why(JsonNode decision, String vp) {
+        JsonNode because = decision.path("why").path(vp).path("because");
+        String dropped = decision.path("dropped").isEmpty() ? ""
+                : "; dropped " + String.join(", ", textsOf(decision.path("dropped")));
+        return because.isTextual() ? ": " + because.asText() + dropped : "   (" + because(decision.path("inputs")) + ")";
+    }
+
+    private static List<String> textsOf(JsonNode array) {
+        List<String> texts = new ArrayList<>();
+        array.forEach(x -> texts.add(x.asText()));
+        return texts;
     }
 
     private static String because(JsonNode inputs) {

@@ -26,6 +26,8 @@ public final class MironIssueCodes {
     public static final String SAMPLE_OFF_GRID = "miron.sample-off-grid";
     /** A sample declared twice. */
     public static final String SAMPLE_DUPLICATE = "miron.sample-duplicate";
+    /** A varpoint's initial value ({@code := v}) that is not one of its values. */
+    public static final String INITIAL_NOT_A_VALUE = "miron.initial-not-a-value";
     /** Two impacts on one property. */
     public static final String IMPACT_DUPLICATE = "miron.impact-duplicate";
 
@@ -50,6 +52,14 @@ public final class MironIssueCodes {
 
     // ------------------------------------------------------------------ rules
 
+    /** Rules that can apply together and cannot hold together (warning; the witness situation in the message). */
+    public static final String RULE_CONFLICT = "miron.rule-conflict";
+    /** A rule whose condition is false in every situation the rule check tried (warning). */
+    public static final String RULE_NEVER_APPLIES = "miron.rule-never-applies";
+    /** A rule dropped for higher rules whenever it applies (warning). */
+    public static final String RULE_SHADOWED = "miron.rule-shadowed";
+    /** The rule check's time budget ran out before every situation was tried (warning). */
+    public static final String RULE_CHECK_CUT = "miron.rule-check-cut";
     /** A rule condition that is not boolean. */
     public static final String RULE_CONDITION_TYPE = "miron.rule-condition-type";
     /** A rule consequence that is not a boolean constraint. */

@@ -6,10 +6,14 @@ import static org.miron.dsl.validation.Texts.line;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.ServiceLoader;
 
 import org.eclipse.xtext.validation.Check;
+import org.eclipse.xtext.validation.CheckType;
 import org.eclipse.xtext.validation.ComposedChecks;
+import org.miron.dsl.miron.MironModel;
 import org.miron.dsl.miron.MironPackage;
+import org.miron.dsl.miron.Rule;
 import org.miron.dsl.roqme.Import;
 import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.util.Imports;
@@ -23,11 +27,41 @@ import org.miron.dsl.util.Imports;
 public class MironValidator extends AbstractMironValidator {
 
     private static final MironPackage M = MironPackage.eINSTANCE;
+    /**
+     * Rule interaction checks on the class path (org.miron.generator's), if any; none when the
+     * system property miron.ruleAnalysis is "false" (the launcher's AppCDS training run: JDK 17's
+     * archive dump crashes on a class the analysis loads, see docs/performance.md).
+     */
+    private static final List<RuleAnalysis> RULE_ANALYSES = "false".equals(System.getProperty("miron.ruleAnalysis"))
+            ? List.of()
+            : ServiceLoader.load(RuleAnalysis.class, MironValidator.class.getClassLoader()).stream()
+                    .map(ServiceLoader.Provider::get).toList();
 
     @Override
     protected List<String> allowedImports() {
         // BehaviorTree.CPP's own trees are .xml files (root element <root>), loaded by the BT language.
         return List.of("bt", "xml", "roqme", "miron");
+    }
+
+    /**
+     * Rules that can apply together and cannot hold together, rules that never apply, rules always
+     * overridden (docs/issue-codes.md): warnings on the rules of this file, only when the file has
+     * no syntax error (the analysis itself skips models the generators would refuse). Expensive
+     * (up to its 1 s budget): `miron check` and the language server run it, `miron generate` does not.
+     */
+    @Check(CheckType.EXPENSIVE)
+    public void checkRuleInteractions(MironModel model) {
+        if (RULE_ANALYSES.isEmpty() || model.eResource() == null || !model.eResource().getErrors().isEmpty()
+                || model.getSentences().stream().noneMatch(s -> s instanceof Rule)) {
+            return;
+        }
+        for (RuleAnalysis analysis : RULE_ANALYSES) {
+            for (RuleAnalysis.Finding f : analysis.analyse(model)) {
+                if (f.element().eResource() == model.eResource()) {
+                    warning(f.message(), f.element(), f.element().eClass().getEStructuralFeature("name"), f.code());
+                }
+            }
+        }
     }
 
     @Check

@@ -18,9 +18,18 @@ import org.miron.dsl.miron.MironPackage;
 import org.miron.dsl.miron.NumericSampledType;
 import org.miron.dsl.miron.QoSProfiledValue;
 import org.miron.dsl.miron.SampleValue;
+import org.miron.dsl.miron.VariationPoint;
+import org.miron.dsl.roqme.BooleanType;
+import org.miron.dsl.roqme.BooleanValue;
+import org.miron.dsl.roqme.DataType;
+import org.miron.dsl.roqme.EnumType;
+import org.miron.dsl.roqme.EnumValue;
+import org.miron.dsl.roqme.Expression;
 import org.miron.dsl.roqme.NumericType;
+import org.miron.dsl.roqme.NumericValue;
 import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.util.Names;
+import org.miron.dsl.util.Types;
 
 /** Types of variation points: one preset per BT enum, samples in range and on the grid, impacts. */
 public class VariationPointTypeChecks extends CheckSet {
@@ -84,6 +93,45 @@ public class VariationPointTypeChecks extends CheckSet {
                 error("impact on '" + impact.getProperty().getName() + "' is declared twice", impact,
                         M.getImpactOnQuality_Property(), IMPACT_DUPLICATE);
             }
+        }
+    }
+
+    /**
+     * {@code := v}: the varpoint's value when the robot starts, so it must be one of its values: a
+     * number in its range and on its grid, one of its own enum literals, or a Boolean.
+     */
+    @Check
+    public void checkInitialValue(VariationPoint vp) {
+        Expression init = vp.getInitializedTo();
+        if (init == null) {
+            return;
+        }
+        DataType type = Types.dataType(vp);
+        String problem = null;
+        if (type instanceof NumericType n) {
+            if (!(init instanceof NumericValue v)) {
+                problem = "is not a number";
+            } else if ((n.getLower() != null && v.getValue() < n.getLower())
+                    || (n.getUpper() != null && v.getValue() > n.getUpper())) {
+                problem = "is outside its range " + range(n);
+            } else if (n.getPrecision() != null && n.getPrecision() > 0 && !onGrid(v.getValue(), n)) {
+                problem = "is not on its precision grid " + fmt(n.getLower() == null ? 0 : n.getLower()) + " + k*"
+                        + fmt(n.getPrecision());
+            }
+        } else if (type instanceof EnumType e) {
+            if (!(init instanceof EnumValue v) || v.getLiteral() == null || !e.getLiterals().contains(v.getLiteral())) {
+                problem = "is not one of its literals";
+            }
+        } else if (type instanceof BooleanType) {
+            if (!(init instanceof BooleanValue)) {
+                problem = "is not true or false";
+            }
+        } else {
+            problem = "cannot be given: only numbers, enums and Booleans have initial values";
+        }
+        if (problem != null) {
+            error("initial value of varpoint '" + vp.getName() + "' " + problem, vp, R.getTypedVariable_InitializedTo(),
+                    INITIAL_NOT_A_VALUE);
         }
     }
 }

@@ -75,7 +75,8 @@ public final class BatchGeneration {
 
     /** Generates the MIRoN and RoQME models among resources (loaded by this run's loader) into target. */
     public Outcome run(List<Resource> resources, IFileSystemAccess2 target) {
-        List<Diagnostic> validation = loader.validateAll();
+        // Not the expensive rule check (miron check's): generation of large models keeps its speed.
+        List<Diagnostic> validation = loader.validateAll(org.eclipse.xtext.validation.CheckMode.NORMAL_AND_FAST);
         if (validation.stream().anyMatch(d -> d.severity() == Diagnostic.Severity.ERROR)) {
             return new Outcome(Stage.INVALID, validation, List.of(), List.of(), null);
         }

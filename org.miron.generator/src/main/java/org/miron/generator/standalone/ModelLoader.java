@@ -73,8 +73,16 @@ public class ModelLoader {
         return resource;
     }
 
-    /** Validates every resource loaded so far (the given files and what they import). */
+    /** Validates every resource loaded so far (the given files and what they import), every check. */
     public List<Diagnostic> validateAll() {
+        return validateAll(CheckMode.ALL);
+    }
+
+    /**
+     * Validates with the checks of a mode: {@code NORMAL_AND_FAST} leaves out the expensive ones
+     * (the rule check, docs/issue-codes.md), which `miron generate` does not need.
+     */
+    public List<Diagnostic> validateAll(CheckMode mode) {
         // Validation may load more files (includes found while linking): iterate over a snapshot.
         EcoreUtil.resolveAll(resourceSet);
         Set<Diagnostic> diagnostics = new TreeSet<>();
@@ -83,7 +91,7 @@ public class ModelLoader {
                 continue;
             }
             List<Issue> issues = ((XtextResource) resource).getResourceServiceProvider().getResourceValidator()
-                    .validate(resource, CheckMode.ALL, CancelIndicator.NullImpl);
+                    .validate(resource, mode, CancelIndicator.NullImpl);
             for (Issue issue : issues) {
                 Diagnostic.Severity severity = switch (issue.getSeverity()) {
                     case ERROR -> Diagnostic.Severity.ERROR;

@@ -73,6 +73,16 @@ public class DiagnosticsLspTest {
         assertTrue(shown, shown.contains("Rounds at 8 on weekdays."));
     }
 
+    /** The rule check (miron.rule-conflict and its witness) reaches the editor as `miron check` prints it. */
+    @Test
+    public void ruleConflictsAreWarnedAsByMironCheck() throws Exception {
+        Path miron = session.workspace.resolve("intralogistics.miron");
+        Files.writeString(miron, Files.readString(miron) + "\nrule rush : roqme.safety > 0.8 implies task = task::pick\n");
+        List<org.miron.generator.standalone.Diagnostic> expected = assertSameAsMironCheck(miron, List.of(miron));
+        assertTrue(expected.toString(), expected.stream().anyMatch(d -> d.code().equals("miron.rule-conflict")
+                && d.message().equals("rules noBattery and rush conflict when power_autonomy < 0.3 and safety > 0.8; noBattery wins")));
+    }
+
     /**
      * Opens the files and checks that the server publishes for each exactly what `miron check`
      * reports for it (message, position, severity and code) when loading the first; returns those.

@@ -49,11 +49,11 @@ public final class CrossCheckBackend implements SolverBackend {
     }
 
     static boolean agree(SolveResult a, SolveResult b) {
-        return a.status() == b.status() && a.decisions().equals(b.decisions());
+        return a.status() == b.status() && a.decisions().equals(b.decisions()) && a.dropped().equals(b.dropped());
     }
 
     private static String describe(SolveResult r) {
-        return r.solved() ? r.decisions().toString() : r.status() + " (" + r.message() + ")";
+        return r.solved() ? r.decisions() + (r.dropped().isEmpty() ? "" : " dropping " + r.dropped()) : r.status() + " (" + r.message() + ")";
     }
 
     @Override

@@ -29,6 +29,10 @@ public final class Engine implements AutoCloseable {
     private final InputDecoder decoder;
     private final EngineStatus status;
     private final Map<String, Integer> applied = new LinkedHashMap<>(); // solve thread only
+    /** Varpoints a decision has set (solve thread only): from then on the model's tie-break decides. */
+    private final java.util.Set<String> sent = new java.util.HashSet<>();
+    private final RuleActivity activity; // null without a decision section
+    private final DecisionExplainer explainer; // null with activity
     private volatile Map<String, Object> appliedValues = Map.of();
     private BusClient bus;
     private ParameterSender sender;
@@ -46,6 +50,29 @@ public final class Engine implements AutoCloseable {
         this.state = new InputState(model);
         this.decoder = new InputDecoder(model, state);
         this.status = new EngineStatus(model.model(), backend.name());
+        this.activity = activity(model);
+        this.explainer = activity == null ? null : new DecisionExplainer(model, activity);
+        Map<String, Object> initial = new LinkedHashMap<>();
+        for (VariationPoint vp : model.varpoints()) {
+            if (vp.initial() != null) { // the robot starts with it: applied before any decision
+                applied.put(vp.name(), vp.initial());
+                initial.put(vp.name(), vp.values().get(vp.initial()));
+            }
+        }
+        appliedValues = initial;
+    }
+
+    /** Rule activity needs the decision section; without it every decision is sent as before. */
+    private static RuleActivity activity(IoModel model) {
+        if (model.decision() == null) {
+            return null;
+        }
+        try {
+            return new RuleActivity(model);
+        } catch (IllegalArgumentException e) {
+            LOG.warning("decision section unusable for explanations: " + e.getMessage());
+            return null;
+        }
     }
 
     /** The name of the backend that decides (native, minizinc, both). */
@@ -186,7 +213,7 @@ public final class Engine implements AutoCloseable {
         entry.put("outcome", r.status().name());
         entry.set("inputs", Json.MAPPER.valueToTree(snap.params()));
         if (r.solved()) {
-            apply(r, entry);
+            apply(r, snap, entry);
         } else {
             entry.put("message", r.message());
             LOG.warning("solve failed (" + r.status() + "), keeping the last configuration: " + r.message());
@@ -207,12 +234,33 @@ public final class Engine implements AutoCloseable {
         return null;
     }
 
-    private void apply(SolveResult r, ObjectNode entry) {
+    /**
+     * Applies a decision: sends what changed, except for parameters (varpoints not woven into the
+     * tree as variants, whose preset the executor expects at start-up) no decision has set yet that
+     * nothing asks to change (no impact, no applicable rule, no override): they keep their initial
+     * value, or stay unset ({@code null} in the decision). Once a rule has set one, the model's
+     * tie-break decides when the rule lets go: back to the preset (or the initial value), else the
+     * current value stays.
+     */
+    private void apply(SolveResult r, InputState.Snapshot snap, ObjectNode entry) {
         seq++;
         ArrayNode changed = Json.MAPPER.createArrayNode();
+        ArrayNode held = Json.MAPPER.createArrayNode();
         ObjectNode decisions = Json.object();
         Map<String, Object> values = new LinkedHashMap<>();
-        for (VariationPoint vp : model.varpoints()) {
+        RuleActivity.Activity act = activity == null ? null
+                : activity.evaluate(snap.params(), r.decisions(), r.dropped());
+        for (int v = 0; v < model.varpoints().size(); v++) {
+            VariationPoint vp = model.varpoints().get(v);
+            if (act != null && !act.asked()[v] && !sent.contains(vp.name()) && !vp.bindingType().equals("bt")) {
+                held.add(vp.name());
+                Integer kept = applied.get(vp.name());
+                decisions.set(vp.name(), kept == null ? null : vp.values().get(kept));
+                if (kept != null) {
+                    values.put(vp.name(), vp.values().get(kept));
+                }
+                continue;
+            }
             int idx = r.decisions().get(vp.decision());
             JsonNode value = vp.values().get(idx);
             decisions.set(vp.name(), value);
@@ -220,6 +268,7 @@ public final class Engine implements AutoCloseable {
             Integer before = applied.put(vp.name(), idx);
             if (before == null || before != idx) {
                 changed.add(vp.name());
+                sent.add(vp.name());
                 state.setCurrent(vp, idx);
             }
         }
@@ -231,6 +280,20 @@ public final class Engine implements AutoCloseable {
         }
         entry.put("seq", seq);
         entry.put("optimal", r.optimal());
+        entry.set("dropped", Json.MAPPER.valueToTree(r.dropped()));
+        entry.set("held", held);
+        if (act != null) {
+            entry.set("applied", explainer.applied(act));
+            ObjectNode why = entry.putObject("why");
+            for (JsonNode name : changed) {
+                VariationPoint vp = model.varpoint(name.asText()).orElseThrow();
+                why.set(vp.name(), explainer.explain(act, model.varpoints().indexOf(vp)));
+            }
+        }
+        if (!r.dropped().isEmpty()) {
+            status.count("droppedRules");
+            LOG.info("rules dropped for higher ones: " + String.join(", ", r.dropped()));
+        }
         entry.set("decisions", decisions);
         entry.set("changed", changed);
         bus.publishRetained(Topics.DECISION, Topics.DECISION, Json.write(entry));

@@ -22,7 +22,7 @@ public final class EngineStatus {
         this.model = model;
         this.backend = backend;
         for (String c : new String[] {"solves", "solved", "unsat", "timeout", "solverError", "malformedInput",
-                "unknownInput", "badTypeInput", "paramSent", "paramAcked", "paramRetries", "solveRetries"}) {
+                "unknownInput", "badTypeInput", "paramSent", "paramAcked", "paramRetries", "solveRetries", "droppedRules"}) {
             counters.put(c, 0L);
         }
     }

@@ -27,7 +27,7 @@ public final class InputState {
         for (VariationPoint vp : model.varpoints()) {
             params.put(vp.input(), Boolean.FALSE);
             params.put(vp.inputValue(), 0);
-            params.put(vp.current(), -1);
+            params.put(vp.current(), vp.initial() == null ? -1 : vp.initial()); // the robot starts there
         }
     }
 

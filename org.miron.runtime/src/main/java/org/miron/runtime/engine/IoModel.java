@@ -16,11 +16,13 @@ import org.miron.runtime.Json;
  * The generated {@code name.io.json} (docs/io-json.md), with the .mzn/.dzn paths resolved.
  *
  * @param weights  the objective's weight policy, {@code need} (default) or {@code metric}
+ * @param rules    the rules in priority order with their keep parameters (empty in files
+ *                 generated before priorities: every rule is then always kept)
  * @param decision the structured {@code decision} section (the native backend's input), null in
  *                 files generated before it existed
  */
 public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, List<VariationPoint> varpoints,
-        String weights, JsonNode decision) {
+        List<RuleSpec> rules, String weights, JsonNode decision) {
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final List<String> ROQME_TYPES = List.of("boolean", "event", "enum", "number");
 
@@ -67,10 +69,19 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         for (int i = 0; i < varpointNodes.size(); i++) {
             vps.add(varpoint(varpointNodes.get(i), "varpoints[" + i + "]"));
         }
+        List<RuleSpec> rules = new ArrayList<>();
+        JsonNode ruleNodes = root.get("rules");
+        if (ruleNodes != null && !ruleNodes.isNull()) {
+            JsonNode array = array(root, "rules");
+            for (int i = 0; i < array.size(); i++) {
+                JsonNode r = array.get(i);
+                rules.add(within("rules[" + i + "]", () -> new RuleSpec(required(r, "name"), identifier(r, "keep"))));
+            }
+        }
         String model = optional(root, "model");
         JsonNode decision = root.get("decision");
         return new IoModel(model == null ? "model" : model, mzn, dzn, List.copyOf(inputs), List.copyOf(vps),
-                root.path("weights").asText("need"), decision == null || decision.isNull() ? null : decision);
+                List.copyOf(rules), root.path("weights").asText("need"), decision == null || decision.isNull() ? null : decision);
     }
 
     private static InputSpec input(JsonNode in) {
@@ -124,8 +135,12 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         if (preset != null && (preset < 0 || preset >= values.size())) {
             throw new IllegalArgumentException("varpoint " + name + " has preset " + preset + " outside its values");
         }
+        Integer initial = index(vp, "initial");
+        if (initial != null && (initial < 0 || initial >= values.size())) {
+            throw new IllegalArgumentException("varpoint " + name + " has initial " + initial + " outside its values");
+        }
         return new VariationPoint(name, kind, List.copyOf(values), preset, identifier(vp, "decision"),
-                identifier(vp, "input"), identifier(vp, "inputValue"), identifier(vp, "current"), binding);
+                identifier(vp, "input"), identifier(vp, "inputValue"), identifier(vp, "current"), binding, initial);
     }
 
     /** The binding with the fields applying it needs: {@code variable} (bt, btport), the query's four (arch). */
@@ -189,13 +204,18 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
 
     /** A varpoint's preset: a whole number (range checked by the caller), or null. */
     private static Integer preset(JsonNode vp) {
-        JsonNode n = vp.get("preset");
+        return index(vp, "preset");
+    }
+
+    /** An optional index field: a whole number (range checked by the caller), or null. */
+    private static Integer index(JsonNode vp, String field) {
+        JsonNode n = vp.get(field);
         if (n == null || n.isNull()) {
             return null;
         }
         double d = n.asDouble();
         if (!n.isNumber() || d != Math.rint(d) || Math.abs(d) > Integer.MAX_VALUE) {
-            throw new IllegalArgumentException("field 'preset' is " + n + ", not a 0-based index into 'values'");
+            throw new IllegalArgumentException("field '" + field + "' is " + n + ", not a 0-based index into 'values'");
         }
         return (int) d;
     }

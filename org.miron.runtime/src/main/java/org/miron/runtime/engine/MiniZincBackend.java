@@ -87,8 +87,14 @@ public final class MiniZincBackend implements SolverBackend {
         return cmd;
     }
 
+    /** Solves with rule priority: conflicting lower rules are dropped ({@link RulePriority}). */
     @Override
     public SolveResult solve(Map<String, Object> params) {
+        return RulePriority.solve(model.rules(), params, this::solveOnce);
+    }
+
+    /** One minizinc run; the parameters include every rule's keep flag. */
+    private SolveResult solveOnce(Map<String, Object> params) {
         long start = System.nanoTime();
         Path paramsFile;
         String data;

@@ -1,8 +1,10 @@
 package org.miron.runtime.engine;
 
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
@@ -18,6 +20,10 @@ import java.util.concurrent.TimeUnit;
  * All working arrays are allocated once; a solve allocates nothing but a new result when the
  * decisions (or the whole milliseconds it took) differ from the previous solve's, whose result,
  * immutable, is returned again otherwise: the steady state allocates nothing.
+ *
+ * <p>Rule priority (as {@link RulePriority} does with MiniZinc): all rules kept first; when that has
+ * no solution, rule k is kept when it can hold with the higher rules kept so far, the others are
+ * dropped (reported in the result), and the optimum under the kept rules is the decision.
  */
 public final class NativeBackend implements SolverBackend {
     private final NativeModel m;
@@ -28,6 +34,9 @@ public final class NativeBackend implements SolverBackend {
     private final int[] assign;
     private final int[] best;
     private final boolean[] active;
+    /** Per rule (priority order): kept (its consequences constrain) or dropped for higher ones. */
+    private final boolean[] keep;
+    private final int[] keptBest;
     /** Per varpoint: the multi-varpoint constraints checked once it (their last varpoint) is assigned. */
     private final int[][] checkAt;
     private final long[] suffix;
@@ -55,6 +64,8 @@ public final class NativeBackend implements SolverBackend {
         lastBest = new int[n];
         suffix = new long[n + 1];
         active = new boolean[m.constraints.length];
+        keep = new boolean[m.ruleNames.length];
+        keptBest = new int[n];
         checkAt = new int[n][];
         for (int v = 0; v < n; v++) {
             final int last = v;
@@ -82,17 +93,33 @@ public final class NativeBackend implements SolverBackend {
         if (missing != null) {
             return SolveResult.failed(SolveResult.Status.ERROR, "no value for parameter " + missing, millisSince(start));
         }
-        if (!domains() || !filter()) {
-            return unsat(start);
-        }
         scores();
-        for (int[] component : m.components) {
-            if (!search(component)) {
-                return unsat(start);
+        Arrays.fill(keep, true);
+        boolean solved = solveKept();
+        int dropped = 0;
+        if (!solved && m.prioritised && keep.length > 0) {
+            Arrays.fill(keep, false);
+            for (int r = 0; r < keep.length; r++) {
+                keep[r] = true;
+                if (solveKept()) {
+                    solved = true;
+                    System.arraycopy(best, 0, keptBest, 0, best.length);
+                } else {
+                    keep[r] = false;
+                    dropped++;
+                }
+            }
+            if (solved) {
+                System.arraycopy(keptBest, 0, best, 0, best.length);
+            } else {
+                solved = solveKept(); // every rule dropped: only the domains are left
             }
         }
+        if (!solved) {
+            return unsat(start);
+        }
         long millis = millisSince(start);
-        if (last != null && last.millis() == millis && Arrays.equals(best, lastBest)) {
+        if (dropped == 0 && last != null && last.millis() == millis && Arrays.equals(best, lastBest)) {
             return last;
         }
         Map<String, Integer> decisions = new LinkedHashMap<>();
@@ -100,8 +127,31 @@ public final class NativeBackend implements SolverBackend {
             decisions.put(m.decisionNames[v], best[v]);
         }
         System.arraycopy(best, 0, lastBest, 0, best.length);
-        last = new SolveResult(SolveResult.Status.SOLVED, Collections.unmodifiableMap(decisions), true, "", millis);
-        return last;
+        List<String> droppedNames = new ArrayList<>(dropped);
+        for (int r = 0; r < keep.length && dropped > 0; r++) {
+            if (!keep[r]) {
+                droppedNames.add(m.ruleNames[r]);
+            }
+        }
+        SolveResult result = new SolveResult(SolveResult.Status.SOLVED, Collections.unmodifiableMap(decisions), true, "",
+                millis, List.copyOf(droppedNames));
+        if (dropped == 0) {
+            last = result;
+        }
+        return result;
+    }
+
+    /** Optimises every component into {@code best} under the kept rules; false when one has no solution. */
+    private boolean solveKept() {
+        if (!domains() || !filter()) {
+            return false;
+        }
+        for (int[] component : m.components) {
+            if (!search(component)) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
@@ -110,6 +160,14 @@ public final class NativeBackend implements SolverBackend {
      * model leaves to the solver's search) from a real difference.
      */
     public Long objective(Map<String, Object> params, Map<String, Integer> decisions) {
+        return objective(params, decisions, List.of());
+    }
+
+    /** The objective with the named rules dropped (as a solve that reported them dropped). */
+    public Long objective(Map<String, Object> params, Map<String, Integer> decisions, List<String> dropped) {
+        for (int r = 0; r < keep.length; r++) {
+            keep[r] = !dropped.contains(m.ruleNames[r]);
+        }
         if (read(params) != null || !domains()) {
             return null;
         }
@@ -201,6 +259,9 @@ public final class NativeBackend implements SolverBackend {
 
     /** The guard's part that reads no varpoint: no override on what it constrains, contexts known. */
     private boolean guarded(NativeModel.Constraint k) {
+        if (!keep[k.rule()]) {
+            return false;
+        }
         for (int vp : k.overrides()) {
             if (param[m.inputSlot[vp]] == 1) {
                 return false;

@@ -21,8 +21,9 @@ final class NativeModel {
      * @param overrides varpoints whose override disables it
      * @param known     slots of the {@code _known} flags it needs
      * @param vars      varpoints it reads (condition and constraint), ascending
+     * @param rule      index of its rule in priority order
      */
-    record Constraint(int[] overrides, int[] known, int condition, int body, int[] vars) {
+    record Constraint(int[] overrides, int[] known, int condition, int body, int[] vars, int rule) {
     }
 
     final boolean maximize;
@@ -39,6 +40,14 @@ final class NativeModel {
     final boolean weightIsNeed;
     final ExpressionPool pool;
     final Constraint[] constraints;
+    /** Rule names in priority order (the decision section's order, the io.json's {@code rules}). */
+    final String[] ruleNames;
+    /** Per rule: its condition (pool node), the varpoints the condition reads, its {@code _known} slots. */
+    final int[] ruleCondition;
+    final int[][] ruleConditionVars;
+    final int[][] ruleKnown;
+    /** The io.json lists its rules' priorities: lower rules may be dropped (else all are hard). */
+    final boolean prioritised;
     /** Components, each its varpoints ascending (the order MiniZinc's search assigns them in). */
     final int[][] components;
 
@@ -109,8 +118,22 @@ final class NativeModel {
         pool = new ExpressionPool(slots, vpIndex, values);
         List<Constraint> list = new ArrayList<>();
         JsonNode rules = d.path("rules");
+        ruleNames = new String[rules.size()];
+        ruleCondition = new int[rules.size()];
+        ruleConditionVars = new int[rules.size()][];
+        ruleKnown = new int[rules.size()][];
+        prioritised = !io.rules().isEmpty();
+        if (prioritised && io.rules().size() != rules.size()) {
+            throw new IllegalArgumentException("decision.rules has " + rules.size() + " entries, rules "
+                    + io.rules().size());
+        }
         for (int r = 0; r < rules.size(); r++) {
             JsonNode rule = rules.get(r);
+            ruleNames[r] = rule.path("name").asText();
+            if (prioritised && !io.rules().get(r).name().equals(ruleNames[r])) {
+                throw new IllegalArgumentException("decision.rules[" + r + "] is " + ruleNames[r] + ", rules[" + r
+                        + "] " + io.rules().get(r).name() + ": the same rules in the same order are expected");
+            }
             int[] known = new int[rule.path("known").size()];
             for (int k = 0; k < known.length; k++) {
                 Integer slot = slots.get(rule.path("known").get(k).asText());
@@ -122,6 +145,9 @@ final class NativeModel {
             }
             BitSet conditionReads = new BitSet();
             int condition = pool.compile(rule.get("condition"), conditionReads);
+            ruleCondition[r] = condition;
+            ruleConditionVars[r] = conditionReads.stream().toArray();
+            ruleKnown[r] = known;
             for (JsonNode c : rule.path("consequences")) {
                 BitSet reads = (BitSet) conditionReads.clone();
                 int body = pool.compile(c.get("constraint"), reads);
@@ -134,7 +160,7 @@ final class NativeModel {
                     }
                     overrides[o] = vp;
                 }
-                list.add(new Constraint(overrides, known, condition, body, reads.stream().toArray()));
+                list.add(new Constraint(overrides, known, condition, body, reads.stream().toArray(), r));
             }
         }
         constraints = list.toArray(new Constraint[0]);

@@ -10,9 +10,11 @@ import java.util.List;
  * @param values  literal names (enum) or numbers, as JSON so numbers are never truncated
  * @param preset  index of the design-time choice, or null
  * @param binding how a decision is applied, null for decision-only varpoints
+ * @param initial index of the value the robot starts with ({@code := v}), or null: it is the applied
+ *                value before any decision, and nothing is sent for it until a rule or impact asks
  */
 public record VariationPoint(String name, String kind, List<JsonNode> values, Integer preset, String decision,
-        String input, String inputValue, String current, Binding binding) {
+        String input, String inputValue, String current, Binding binding, Integer initial) {
 
     /** Index of a value given from outside (override), or -1 when it is not one of {@code values}. */
     public int indexOf(JsonNode value) {

@@ -121,6 +121,9 @@ public class IoContractTest {
         named.put("initial outside [0,1]", "inputs[0]: field 'initial'");
         breakages.put("decision not an identifier", io -> varpoint(io, 0).put("decision", "task-var"));
         named.put("decision not an identifier", "varpoints[0]: field 'decision'");
+        breakages.put("rule keep not an identifier",
+                io -> io.putArray("rules").addObject().put("name", "battery").put("keep", "keep-1"));
+        named.put("rule keep not an identifier", "rules[0]: field 'keep'");
         Path bad = tmp.getRoot().toPath().resolve("bad.io.json");
         List<String> wrong = new ArrayList<>();
         for (Map.Entry<String, Consumer<ObjectNode>> breakage : breakages.entrySet()) {

@@ -1,6 +1,7 @@
 package org.miron.tests.differential;
 
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
 import static org.junit.Assert.fail;
 
 import java.nio.file.Files;
@@ -39,11 +40,29 @@ public class DifferentialTest {
     public void nativeDecidesAsMiniZinc() throws Exception {
         int cases = Integer.getInteger("miron.differential.cases", 300);
         long seed = Long.getLong("miron.differential.seed", 14);
+        compare(cases, seed, false);
+    }
+
+    /**
+     * Models whose rules often cannot all hold: both backends keep the same rules (the higher ones,
+     * greedily in priority order), drop the same ones and decide the rest alike. Some cases must
+     * drop rules, or the test would not test priority.
+     */
+    @Test
+    public void conflictingRulesAreDroppedAlike() throws Exception {
+        int cases = Integer.getInteger("miron.differential.conflictCases", 100);
+        long seed = Long.getLong("miron.differential.seed", 27);
+        int dropping = compare(cases, seed, true);
+        assertTrue("no case dropped a rule: the conflicting models do not conflict", dropping >= cases / 10);
+    }
+
+    /** Compares the backends on random models; returns how many decisions dropped rules. */
+    private int compare(int cases, long seed, boolean conflicting) throws Exception {
         Random random = new Random(seed);
-        int solved = 0, unsat = 0, invalid = 0, alternative = 0;
+        int solved = 0, unsat = 0, invalid = 0, alternative = 0, dropping = 0;
         for (int done = 0, model = 0; done < cases; model++) {
-            String text = RandomModel.generate(random);
-            Path dir = temp.newFolder("m" + model).toPath();
+            String text = conflicting ? RandomModel.generateConflicting(random) : RandomModel.generate(random);
+            Path dir = temp.newFolder((conflicting ? "c" : "m") + model).toPath();
             Files.writeString(dir.resolve("t.bt"), RandomModel.BT);
             Files.writeString(dir.resolve("m.miron"), text);
             int exit = MironCli.run("generate", dir.resolve("m.miron").toString(), "-o", dir.resolve("out").toString());
@@ -67,10 +86,14 @@ public class DifferentialTest {
                         fail("minizinc failed: " + where);
                     }
                     assertEquals(where, expected.status(), actual.status());
+                    assertEquals("dropped rules: " + where, expected.dropped(), actual.dropped());
+                    if (!expected.dropped().isEmpty()) {
+                        dropping++;
+                    }
                     if (!expected.decisions().equals(actual.decisions())) {
                         // Same objective, both consistent: a tie the .mzn leaves to Gecode's default search.
-                        Long mzn = nativeBackend.objective(params, expected.decisions());
-                        Long own = nativeBackend.objective(params, actual.decisions());
+                        Long mzn = nativeBackend.objective(params, expected.decisions(), expected.dropped());
+                        Long own = nativeBackend.objective(params, actual.decisions(), actual.dropped());
                         if (mzn == null || !mzn.equals(own)) {
                             fail("different decision: " + where + "\nobjective of minizinc's decision " + mzn
                                     + ", of native's " + own);
@@ -85,9 +108,11 @@ public class DifferentialTest {
                 }
             }
         }
-        System.out.println("differential: " + cases + " cases agree (" + solved + " decisions, " + unsat
+        System.out.println("differential" + (conflicting ? " (conflicting rules)" : "") + ": " + cases
+                + " cases agree (" + solved + " decisions, " + dropping + " of them dropping rules, " + unsat
                 + " UNSAT; " + alternative + " of the decisions an alternative optimum: equal objective, a tie the model leaves"
                 + " to the solver's search), " + model(invalid) + " skipped as invalid, seed " + seed);
+        return dropping;
     }
 
     /**

@@ -33,14 +33,22 @@ final class RandomModel {
     /** Per varpoint: 'e' enum (with its literal count), 'n' number (with its range), 'b' boolean. */
     private final List<char[]> kinds = new ArrayList<>();
     private final List<Integer> sizes = new ArrayList<>();
+    /** Few varpoints and many rules that often apply: rules that cannot all hold (priority decides). */
+    private final boolean conflicting;
 
-    private RandomModel(Random random) {
+    private RandomModel(Random random, boolean conflicting) {
         this.random = random;
+        this.conflicting = conflicting;
         properties = 1 + random.nextInt(3);
     }
 
     static String generate(Random random) {
-        return new RandomModel(random).build();
+        return new RandomModel(random, false).build();
+    }
+
+    /** A model whose rules often conflict: 1 or 2 varpoints, 3 to 6 rules. */
+    static String generateConflicting(Random random) {
+        return new RandomModel(random, true).build();
     }
 
     private String build() {
@@ -50,15 +58,15 @@ final class RandomModel {
         }
         text.append("context c0 : number (0:10)\ncontext c1 : number (-5:5)\ncontext b0 : boolean\n")
                 .append("context e0 : enum { A, B, C }\n");
-        int varpoints = 1 + random.nextInt(4);
+        int varpoints = conflicting ? 1 + random.nextInt(2) : 1 + random.nextInt(4);
         for (int v = 0; v < varpoints; v++) {
             varpoint(v);
         }
-        int rules = random.nextInt(6);
+        int rules = conflicting ? 3 + random.nextInt(4) : random.nextInt(6);
         for (int r = 0; r < rules; r++) {
             text.append("rule r").append(r).append(" : ");
             if (random.nextInt(5) > 0) {
-                text.append(condition(2)).append(' ');
+                text.append(conflicting ? condition(0) : condition(2)).append(' ');
             }
             text.append("implies ");
             int consequences = 1 + random.nextInt(2);
