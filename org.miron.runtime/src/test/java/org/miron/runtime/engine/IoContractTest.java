@@ -140,6 +140,13 @@ public class IoContractTest {
         named.put("initial outside [0,1]", "inputs[0]: field 'initial'");
         breakages.put("decision not an identifier", io -> varpoint(io, 0).put("decision", "task-var"));
         named.put("decision not an identifier", "varpoints[0]: field 'decision'");
+        breakages.put("boolean varpoint as numbers", io -> varpoint(io, 1).put("kind", "boolean"));
+        named.put("boolean varpoint as numbers", "varpoints[1]: varpoint maxVelocity (boolean) has values");
+        breakages.put("boolean varpoint as 0 and 1", io -> {
+            varpoint(io, 1).put("kind", "boolean");
+            varpoint(io, 1).putArray("values").add(0).add(1);
+        });
+        named.put("boolean varpoint as 0 and 1", "not [false,true]");
         Path bad = tmp.getRoot().toPath().resolve("bad.io.json");
         List<String> wrong = new ArrayList<>();
         for (Map.Entry<String, Consumer<ObjectNode>> breakage : breakages.entrySet()) {
