@@ -103,6 +103,7 @@ public class DataSampler {
     private SampledVariationPoint sampleBoolean(VariationPoint vp) {
         SampledVariationPoint s = new SampledVariationPoint(vp, SampledVariationPoint.Kind.NUMBER);
         s.step = BigDecimal.ONE;
+        s.bool = true;
         s.values.add(BigDecimal.ZERO);
         s.values.add(BigDecimal.ONE);
         return s;

@@ -154,10 +154,12 @@ public class IoMapGenerator {
     private static ObjectNode varpoint(SampledVariationPoint vp) {
         ObjectNode node = JSON.objectNode();
         node.put("name", vp.name);
-        node.put("kind", vp.isEnum() ? "enum" : "number");
+        node.put("kind", vp.isEnum() ? "enum" : vp.bool ? "boolean" : "number");
         ArrayNode values = node.putArray("values");
         if (vp.isEnum()) {
             vp.labels().forEach(values::add);
+        } else if (vp.bool) {
+            values.add(false).add(true); // the 0/1 of the MiniZinc model, by index
         } else {
             vp.values.forEach(v -> values.add(number(v)));
         }

@@ -18,7 +18,7 @@ public final class SampledVariationPoint {
     public enum Kind {
         /** Enum literals (labels); the value of index i is i. */
         ENUM,
-        /** Sampled numbers (booleans are the numbers 0 and 1). */
+        /** Sampled numbers (booleans are the numbers 0 and 1, see {@link #bool}). */
         NUMBER
     }
 
@@ -31,6 +31,11 @@ public final class SampledVariationPoint {
     public final List<BigDecimal> values = new ArrayList<>();
     /** Distance between neighbouring values (numbers), used for "=" within half a step. */
     public BigDecimal step;
+    /**
+     * A boolean varpoint: MiniZinc sees the numbers 0 and 1, io.json and everything after it the
+     * values {@code false} and {@code true}.
+     */
+    public boolean bool;
     /** Index of the preset literal, -1 when there is none. */
     public int preset = -1;
     /** Utility in [0,100] of each value, per property, in order of first mention. */

@@ -70,6 +70,23 @@ public class HospitalDecisionTest {
     }
 
     /**
+     * sounds is a boolean varpoint: io.json lists its values as false/true (the .mzn decides the
+     * index 0/1 into them); dayShift turns it on, nightShift off.
+     */
+    @Test
+    public void soundsIsTrueByDayAndFalseAtNight() {
+        assertEquals("boolean", mzn.varpoint("sounds").get("kind").asText());
+        assertEquals("[false,true]", mzn.varpoint("sounds").get("values").toString());
+        ObjectNode data = mzn.defaults();
+        data.put("context_Hospital_shift_known", true);
+        data.put("context_Hospital_urgent_known", true);
+        data.put("context_Hospital_shift", 0); // day (day, evening, night)
+        assertEquals("true", mzn.value("sounds", mzn.solve(data)));
+        data.put("context_Hospital_shift", 2);
+        assertEquals("false", mzn.value("sounds", mzn.solve(data)));
+    }
+
+    /**
      * The rules never contradict each other: with every context known and at every combination
      * of the contexts and of metric values on both sides of the rules' thresholds, there is a
      * decision (an UNSAT model would leave the robot on its last configuration).

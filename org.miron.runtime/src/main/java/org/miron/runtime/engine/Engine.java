@@ -211,7 +211,7 @@ public final class Engine implements AutoCloseable {
         entry.put("backend", backend.name());
         entry.put("solveMs", r.millis());
         entry.put("outcome", r.status().name());
-        entry.set("inputs", Json.MAPPER.valueToTree(snap.params()));
+        entry.set("inputs", inputs(snap.params()));
         if (r.solved()) {
             apply(r, snap, entry);
         } else {
@@ -222,6 +222,24 @@ public final class Engine implements AutoCloseable {
             log.append(entry);
         }
         publishStatus();
+    }
+
+    /**
+     * The solve's parameters as logged and published; a boolean varpoint's indices shown as its
+     * values (false/true, null before the first decision), so the 0/1 of the .mzn stays inside.
+     */
+    private ObjectNode inputs(Map<String, Object> params) {
+        ObjectNode inputs = Json.MAPPER.valueToTree(params);
+        for (VariationPoint vp : model.varpoints()) {
+            if (vp.isBoolean()) {
+                for (String param : List.of(vp.inputValue(), vp.current())) {
+                    if (params.get(param) instanceof Integer index) {
+                        inputs.set(param, vp.valueAt(index));
+                    }
+                }
+            }
+        }
+        return inputs;
     }
 
     private String outOfRange(SolveResult r) {

@@ -25,6 +25,7 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
         List<RuleSpec> rules, String weights, JsonNode decision) {
     private static final Pattern IDENTIFIER = Pattern.compile("[A-Za-z][A-Za-z0-9_]*");
     private static final List<String> ROQME_TYPES = List.of("boolean", "event", "enum", "number");
+    private static final JsonNode BOOLEAN_VALUES = Json.MAPPER.createArrayNode().add(false).add(true);
 
     /** Reads and validates the file; any problem is an {@link IllegalArgumentException} naming it. */
     public static IoModel load(Path ioJson) {
@@ -122,12 +123,17 @@ public record IoModel(String model, Path mzn, Path dzn, List<InputSpec> inputs, 
             throw new IllegalArgumentException("varpoint " + name + " has no values");
         }
         String kind = required(vp, "kind");
-        boolean numeric = kind.equals("number");
-        if (!numeric && !kind.equals("enum")) {
-            throw new IllegalArgumentException("varpoint " + name + " has kind '" + kind + "' (enum or number)");
+        if (kind.equals("boolean")) {
+            // By index the 0 and 1 of the .mzn: nothing else would keep the encoding internal.
+            if (!vp.path("values").equals(BOOLEAN_VALUES)) {
+                throw new IllegalArgumentException("varpoint " + name + " (boolean) has values " + vp.path("values")
+                        + ", not [false,true]");
+            }
+        } else if (!kind.equals("number") && !kind.equals("enum")) {
+            throw new IllegalArgumentException("varpoint " + name + " has kind '" + kind + "' (enum, number or boolean)");
         }
         for (JsonNode v : values) {
-            if (numeric ? !v.isNumber() : !v.isTextual()) {
+            if (kind.equals("number") ? !v.isNumber() : kind.equals("enum") && !v.isTextual()) {
                 throw new IllegalArgumentException("varpoint " + name + " (" + kind + ") has value " + v);
             }
         }

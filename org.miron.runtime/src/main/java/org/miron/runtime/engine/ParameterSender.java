@@ -32,7 +32,8 @@ public final class ParameterSender implements AutoCloseable {
 
     /**
      * Builds the SmartSoft change-parameter query body (without id) for an arch binding. Numbers
-     * are sent as doubles, never truncated; anything else (an enum literal) as it is.
+     * are sent as doubles, never truncated; a boolean as JSON true/false (a SmartSoft Boolean
+     * parameter's value, never 0/1); anything else (an enum literal) as it is.
      */
     public static ObjectNode changeParameter(Binding arch, JsonNode value) {
         ObjectNode q = Json.object();

@@ -12,7 +12,7 @@ import org.miron.runtime.bus.Topics;
 /**
  * Feeds the engine's decisions on the bus to a running BT executor: {@code miron.variant.<vp>}
  * values go to the variant source that VariantAction nodes read, {@code miron.blackboard.<vp>}
- * numbers to the source the tree copies into its blackboard before each tick. An executor that
+ * numbers and booleans to the source the tree copies into its blackboard before each tick. An executor that
  * starts late still gets the current decisions, from the broker's last-value cache.
  */
 public final class DecisionFeed implements AutoCloseable {
@@ -54,9 +54,11 @@ public final class DecisionFeed implements AutoCloseable {
             variants.publish(varpoint, value.asText());
         } else if (value.isNumber()) {
             blackboard.publish(varpoint, value.asDouble());
+        } else if (value.isBoolean()) {
+            blackboard.publish(varpoint, value.asBoolean()); // a boolean varpoint: true/false, as BT.CPP reads it
         } else {
             rejected++;
-            LOG.warning("executor: dropped a non-numeric blackboard decision on " + topic);
+            LOG.warning("executor: dropped a blackboard decision that is neither a number nor a boolean on " + topic);
         }
     }
 

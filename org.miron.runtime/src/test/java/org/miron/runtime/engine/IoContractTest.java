@@ -124,6 +124,13 @@ public class IoContractTest {
         breakages.put("rule keep not an identifier",
                 io -> io.putArray("rules").addObject().put("name", "battery").put("keep", "keep-1"));
         named.put("rule keep not an identifier", "rules[0]: field 'keep'");
+        breakages.put("boolean varpoint as numbers", io -> varpoint(io, 1).put("kind", "boolean"));
+        named.put("boolean varpoint as numbers", "varpoints[1]: varpoint maxVelocity (boolean) has values");
+        breakages.put("boolean varpoint as 0 and 1", io -> {
+            varpoint(io, 1).put("kind", "boolean");
+            varpoint(io, 1).putArray("values").add(0).add(1);
+        });
+        named.put("boolean varpoint as 0 and 1", "not [false,true]");
         Path bad = tmp.getRoot().toPath().resolve("bad.io.json");
         List<String> wrong = new ArrayList<>();
         for (Map.Entry<String, Consumer<ObjectNode>> breakage : breakages.entrySet()) {
