@@ -6,10 +6,12 @@ import org.eclipse.xtext.ide.editor.contentassist.CompletionPrefixProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.antlr.internal.Lexer;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.eclipse.xtext.ide.server.formatting.FormattingService;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
+import org.miron.bt.ide.formatting.SyntaxSafeFormattingService;
 import org.miron.bt.ide.hover.BtDocumentationProvider;
 import org.miron.bt.ide.hover.BtHoverService;
 
@@ -46,5 +48,9 @@ public class BtIdeModule extends AbstractBtIdeModule {
 
     public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
         return BtProposalProvider.class;
+    }
+
+    public Class<? extends FormattingService> bindFormattingService() {
+        return SyntaxSafeFormattingService.class;
     }
 }

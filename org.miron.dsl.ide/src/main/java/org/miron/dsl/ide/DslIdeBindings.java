@@ -4,8 +4,10 @@ import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeCrossrefProposalProvider;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.eclipse.xtext.ide.server.formatting.FormattingService;
 import org.eclipse.xtext.service.AbstractGenericModule;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
+import org.miron.bt.ide.formatting.SyntaxSafeFormattingService;
 import org.miron.dsl.ide.contentassist.DslCrossrefProposalProvider;
 import org.miron.dsl.ide.contentassist.DslProposalProvider;
 import org.miron.dsl.ide.hover.DslDocumentationProvider;
@@ -27,5 +29,9 @@ public class DslIdeBindings extends AbstractGenericModule {
 
     public Class<? extends IdeCrossrefProposalProvider> bindIdeCrossrefProposalProvider() {
         return DslCrossrefProposalProvider.class;
+    }
+
+    public Class<? extends FormattingService> bindFormattingService() {
+        return SyntaxSafeFormattingService.class;
     }
 }
