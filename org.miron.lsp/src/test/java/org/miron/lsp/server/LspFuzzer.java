@@ -72,6 +72,8 @@ public final class LspFuzzer implements AutoCloseable {
     /** Meaningful error answers per request kind (not internal errors). */
     public final Map<String, Integer> errorAnswers = new LinkedHashMap<>();
     public int edits;
+    /** Where the last edit was: half the requests ask there, as an editor asks at the cursor. */
+    private int cursor;
 
     public LspFuzzer(long seed) throws Exception {
         random = new Random(seed);
@@ -122,6 +124,7 @@ public final class LspFuzzer implements AutoCloseable {
             String uri = uris.get(random.nextInt(uris.size()));
             // Now and then the user starts again from a valid file, so edits do not only pile up.
             String text = random.nextInt(25) == 0 ? originals.get(uri) : edit(texts.get(uri));
+            cursor = Math.min(cursor, text.length());
             texts.put(uri, text);
             client.change(uri, text);
             edits++;
@@ -133,6 +136,7 @@ public final class LspFuzzer implements AutoCloseable {
 
     private String edit(String text) {
         int at = text.isEmpty() ? 0 : random.nextInt(text.length() + 1);
+        cursor = at;
         // Never split a surrogate pair: a client's buffer holds whole characters.
         if (at > 0 && at < text.length() && Character.isLowSurrogate(text.charAt(at))) {
             at--;
@@ -147,8 +151,16 @@ public final class LspFuzzer implements AutoCloseable {
         return text.substring(0, at) + INSERTS[random.nextInt(INSERTS.length)] + text.substring(at);
     }
 
+    private int nearCursor(String text) {
+        int at = Math.max(0, Math.min(text.length(), cursor + random.nextInt(7) - 3));
+        return at > 0 && at < text.length() && Character.isLowSurrogate(text.charAt(at)) ? at - 1 : at;
+    }
+
     private Position randomPosition(String text) {
         int at = text.isEmpty() ? 0 : random.nextInt(text.length() + 1);
+        if (at > 0 && at < text.length() && Character.isLowSurrogate(text.charAt(at))) {
+            at--;
+        }
         return TextEdits.position(text, at);
     }
 
@@ -165,7 +177,7 @@ public final class LspFuzzer implements AutoCloseable {
             to = swap;
         }
         Range range = new Range(at, to);
-        Position point = at;
+        Position point = random.nextBoolean() ? at : TextEdits.position(text, nearCursor(text));
         ask("completion", uri, () -> service.completion(new CompletionParams(doc, point)));
         ask("hover", uri, () -> service.hover(new HoverParams(doc, point)));
         ask("definition", uri, () -> service.definition(new DefinitionParams(doc, point)));
@@ -207,7 +219,7 @@ public final class LspFuzzer implements AutoCloseable {
             ResponseError error = ((ResponseErrorException) e.getCause()).getResponseError();
             String data = String.valueOf(error.getData());
             if (error.getCode() == ResponseErrorCode.InternalError.getValue() || data.contains("\tat ")
-                    || data.contains("Exception")) {
+                    || data.contains("Exception") || error.getMessage().startsWith(GuardedRequestManager.MESSAGE)) {
                 internalErrors.add(kind + " " + workspace.relativize(paths.get(uri)) + ": " + error.getMessage()
                         + " " + firstLines(data));
             } else {

@@ -1,4 +1,4 @@
-package org.miron.bt.ide.formatting;
+package org.miron.bt.ide.server;
 
 import java.lang.System.Logger.Level;
 import java.util.List;
