@@ -7,12 +7,14 @@ import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.antlr.internal.Lexer;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
 import org.eclipse.xtext.ide.server.formatting.FormattingService;
+import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
 import org.eclipse.xtext.ide.server.rename.IRenameService2;
 import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
+import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
 import org.miron.bt.ide.server.PlainErrorRenameService;
 import org.miron.bt.ide.server.ResolvedOnlySymbolService;
 import org.miron.bt.ide.server.SyntaxSafeFormattingService;
@@ -64,5 +66,9 @@ public class BtIdeModule extends AbstractBtIdeModule {
 
     public Class<? extends IRenameService2> bindIRenameService2() {
         return PlainErrorRenameService.class;
+    }
+
+    public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
+        return NamelessSafeOffsetHelper.class;
     }
 }

@@ -5,10 +5,12 @@ import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeCrossrefProposalProvider;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
 import org.eclipse.xtext.ide.server.formatting.FormattingService;
+import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
 import org.eclipse.xtext.ide.server.rename.IRenameService2;
 import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
 import org.eclipse.xtext.service.AbstractGenericModule;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
+import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
 import org.miron.bt.ide.server.PlainErrorRenameService;
 import org.miron.bt.ide.server.ResolvedOnlySymbolService;
 import org.miron.bt.ide.server.SyntaxSafeFormattingService;
@@ -45,5 +47,9 @@ public class DslIdeBindings extends AbstractGenericModule {
 
     public Class<? extends IRenameService2> bindIRenameService2() {
         return PlainErrorRenameService.class;
+    }
+
+    public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
+        return NamelessSafeOffsetHelper.class;
     }
 }
