@@ -75,6 +75,20 @@ public class RobustnessLspTest {
         assertAlive();
     }
 
+    /** A client that sends workspace folders without announcing the capability is served on them. */
+    @Test
+    public void workspaceFoldersWithoutCapabilities() throws Exception {
+        try (LspClient client = new LspClient()) {
+            org.eclipse.lsp4j.InitializeParams params = new org.eclipse.lsp4j.InitializeParams();
+            params.setWorkspaceFolders(List.of(new org.eclipse.lsp4j.WorkspaceFolder(LspClient.uri(session.workspace), "w")));
+            client.server().initialize(params).get(60, TimeUnit.SECONDS);
+            client.server().initialized(new org.eclipse.lsp4j.InitializedParams());
+            String uri = client.open(session.workspace.resolve("intralogistics.miron"));
+            // Its imports resolve: the folder's .bt and .roqme are in the workspace.
+            client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
+        }
+    }
+
     @Test
     public void hugeFile() throws Exception {
         StringBuilder text = new StringBuilder("roqme Huge\n");
