@@ -78,7 +78,9 @@ public class BooleanDemoTest {
         for (String line : log) {
             JsonNode entry = json.readTree(line);
             JsonNode sounds = entry.path("decisions").path("sounds");
-            assertTrue(line, sounds.isBoolean());
+            // null while nothing asks for a value yet (before the shift is known: issue 27's held
+            // varpoints), else a JSON boolean, never 0/1.
+            assertTrue(line, sounds.isBoolean() || sounds.isNull() && entry.path("held").toString().contains("\"sounds\""));
             sawTrue |= sounds.asBoolean();
             JsonNode current = entry.path("inputs").path("sounds_current");
             assertTrue(line, current.isBoolean() || current.isNull());

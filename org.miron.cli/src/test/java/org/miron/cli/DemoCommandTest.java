@@ -157,6 +157,9 @@ public class DemoCommandTest {
         assertTrue(told, told.indexOf("ROBOT   toCharger", charge) > 0);
         String report = Files.readString(dir.resolve("report.html"));
         assertTrue(report, report.contains("<tr><td>draining</td><td>undermines autonomy (HIGH)</td>"));
+        // Each adaptation says why (issue 27's explanation), inputs in the model's names.
+        assertTrue(report, report.contains("<td>0.8</td><td>rule crowdedCorridor (crowding = "));
+        assertTrue(report, !report.contains("metric_Hospital_") && !report.contains("context_Hospital_"));
     }
 
     /**

@@ -6,10 +6,18 @@ import org.eclipse.xtext.ide.editor.contentassist.CompletionPrefixProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.antlr.internal.Lexer;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.eclipse.xtext.ide.server.formatting.FormattingService;
+import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
+import org.eclipse.xtext.ide.server.rename.IRenameService2;
+import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
+import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
+import org.miron.bt.ide.server.PlainErrorRenameService;
+import org.miron.bt.ide.server.ResolvedOnlySymbolService;
+import org.miron.bt.ide.server.SyntaxSafeFormattingService;
 import org.miron.bt.ide.hover.BtDocumentationProvider;
 import org.miron.bt.ide.hover.BtHoverService;
 
@@ -46,5 +54,21 @@ public class BtIdeModule extends AbstractBtIdeModule {
 
     public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
         return BtProposalProvider.class;
+    }
+
+    public Class<? extends FormattingService> bindFormattingService() {
+        return SyntaxSafeFormattingService.class;
+    }
+
+    public Class<? extends DocumentSymbolService> bindDocumentSymbolService() {
+        return ResolvedOnlySymbolService.class;
+    }
+
+    public Class<? extends IRenameService2> bindIRenameService2() {
+        return PlainErrorRenameService.class;
+    }
+
+    public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
+        return NamelessSafeOffsetHelper.class;
     }
 }

@@ -14,6 +14,7 @@ import org.miron.bt.util.BtTrees;
 import org.w3c.dom.Element;
 import org.w3c.dom.Node;
 import org.xml.sax.InputSource;
+import org.xml.sax.helpers.DefaultHandler;
 
 /**
  * The node declarations a BT file sees: those in its own {@code <TreeNodesModel>} and in its
@@ -78,6 +79,11 @@ public final class NodeDeclarations {
         factory.setAttribute(XMLConstants.ACCESS_EXTERNAL_DTD, "");
         factory.setAttribute(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
         factory.setExpandEntityReferences(false);
-        return factory.newDocumentBuilder();
+        DocumentBuilder builder = factory.newDocumentBuilder();
+        // A half-written <TreeNodesModel> is the parser's business (its diagnostics): the DOM
+        // parser's default handler would also print "[Fatal Error] ..." on standard error.
+        // DefaultHandler throws on fatal errors and prints nothing.
+        builder.setErrorHandler(new DefaultHandler());
+        return builder;
     }
 }

@@ -88,9 +88,12 @@ final class Narrator implements StatusListener {
         return String.join(", ", parts);
     }
 
-    /** metric_Intralogistics_power_autonomy → power_autonomy (namespaces have no underscore). */
-    private static String shortName(String param) {
-        String rest = param.substring("metric_".length());
+    /**
+     * metric_Intralogistics_power_autonomy → power_autonomy, context_Hospital_shift → shift
+     * (namespaces have no underscore): the model's names for the engine's MiniZinc parameters.
+     */
+    static String shortName(String param) {
+        String rest = param.substring(param.indexOf('_') + 1);
         int underscore = rest.indexOf('_');
         return underscore > 0 && Character.isUpperCase(rest.charAt(0)) ? rest.substring(underscore + 1) : rest;
     }

@@ -64,7 +64,7 @@ public final class TimelineReport {
                     String vp = changed.asText();
                     String now = body.path("decisions").path(vp).asText();
                     adaptations.add(new String[] { seconds(e.at()), vp, applied.getOrDefault(vp, "(start)"), now,
-                            inputsOf(body.path("inputs")) });
+                            body.path("why").path(vp).path("because").asText(""), inputsOf(body.path("inputs")) });
                     applied.put(vp, now);
                 }
             } else if (e.topic().equals(Topics.STATUS) && body.path("state").asText().equals("degraded")) {
@@ -94,7 +94,10 @@ public final class TimelineReport {
         inputs.fields().forEachRemaining(f -> {
             if (!f.getKey().endsWith("_known") && !f.getKey().contains("_input") && !f.getKey().endsWith("_current")) {
                 JsonNode v = f.getValue();
-                parts.add(f.getKey() + " = " + (v.isFloatingPointNumber() ? fmt(v.asDouble()) : v.asText()));
+                // In the model's names (safety, shift), not the MiniZinc parameters'.
+                String name = f.getKey().startsWith("metric_") || f.getKey().startsWith("context_")
+                        ? Narrator.shortName(f.getKey()) : f.getKey();
+                parts.add(name + " = " + (v.isFloatingPointNumber() ? fmt(v.asDouble()) : v.asText()));
             }
         });
         return String.join(", ", parts);
@@ -133,7 +136,7 @@ public final class TimelineReport {
         }
         out.append("<h2>Decisions</h2>\n").append(lanes(decisions));
         out.append("<h2>Adaptations</h2>\n<table><tr><th>time (s)</th><th>variation point</th><th>from</th><th>to</th>"
-                + "<th>inputs the engine saw</th></tr>\n");
+                + "<th>why</th><th>inputs the engine saw</th></tr>\n");
         for (String[] row : adaptations) {
             out.append("<tr>");
             for (String cell : row) {

@@ -4,8 +4,16 @@ import org.eclipse.xtext.documentation.IEObjectDocumentationProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeCrossrefProposalProvider;
 import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
+import org.eclipse.xtext.ide.server.formatting.FormattingService;
+import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
+import org.eclipse.xtext.ide.server.rename.IRenameService2;
+import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
 import org.eclipse.xtext.service.AbstractGenericModule;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
+import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
+import org.miron.bt.ide.server.PlainErrorRenameService;
+import org.miron.bt.ide.server.ResolvedOnlySymbolService;
+import org.miron.bt.ide.server.SyntaxSafeFormattingService;
 import org.miron.dsl.ide.contentassist.DslCrossrefProposalProvider;
 import org.miron.dsl.ide.contentassist.DslProposalProvider;
 import org.miron.dsl.ide.hover.DslDocumentationProvider;
@@ -27,5 +35,21 @@ public class DslIdeBindings extends AbstractGenericModule {
 
     public Class<? extends IdeCrossrefProposalProvider> bindIdeCrossrefProposalProvider() {
         return DslCrossrefProposalProvider.class;
+    }
+
+    public Class<? extends FormattingService> bindFormattingService() {
+        return SyntaxSafeFormattingService.class;
+    }
+
+    public Class<? extends DocumentSymbolService> bindDocumentSymbolService() {
+        return ResolvedOnlySymbolService.class;
+    }
+
+    public Class<? extends IRenameService2> bindIRenameService2() {
+        return PlainErrorRenameService.class;
+    }
+
+    public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
+        return NamelessSafeOffsetHelper.class;
     }
 }

@@ -4,7 +4,13 @@ import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.xtext.formatting2.AbstractJavaFormatter;
+import org.eclipse.xtext.AbstractRule;
 import org.eclipse.xtext.formatting2.IFormattableDocument;
+import org.eclipse.xtext.formatting2.ITextReplacer;
+import org.eclipse.xtext.formatting2.ITextReplacerContext;
+import org.eclipse.xtext.formatting2.internal.CommentReplacer;
+import org.eclipse.xtext.formatting2.internal.WhitespaceReplacer;
+import org.eclipse.xtext.formatting2.regionaccess.IComment;
 import org.eclipse.xtext.formatting2.regionaccess.ISemanticRegion;
 import org.miron.dsl.miron.ArchBinding;
 import org.miron.dsl.miron.BehaviorTreeEnumType;
@@ -32,6 +38,28 @@ public class DslFormatter extends AbstractJavaFormatter {
     /** Elements whose { } block holds one item per line. */
     private static final Set<Class<?>> BLOCKS = Set.of(Observation.class, BehaviorTreeEnumType.class,
             NumericSampledType.class, ArchBinding.class, Rule.class);
+
+    /**
+     * Comments are the grammar's ML_COMMENT/SL_COMMENT; anything else in a hidden region (a stray
+     * token of a half-written file, which rename's re-formatting of the changed region meets) is
+     * kept as written: Xtext would fail with "No ITextReplacer configured for (null)".
+     */
+    @Override
+    public ITextReplacer createCommentReplacer(IComment comment) {
+        if (comment.getGrammarElement() instanceof AbstractRule) {
+            return super.createCommentReplacer(comment);
+        }
+        return new CommentReplacer(comment) {
+            @Override
+            public void configureWhitespace(WhitespaceReplacer leading, WhitespaceReplacer trailing) {
+            }
+
+            @Override
+            public ITextReplacerContext createReplacements(ITextReplacerContext context) {
+                return context;
+            }
+        };
+    }
 
     protected void format(RoqmeModel model, IFormattableDocument doc) {
         // defaults first, at low priority, so that every rule below overrides them

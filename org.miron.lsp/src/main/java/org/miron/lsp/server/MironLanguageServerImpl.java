@@ -45,9 +45,12 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         if (workspace.getExecuteCommand() == null) {
             workspace.setExecuteCommand(new ExecuteCommandCapabilities(false));
         }
-        // Without a root Xtext would fail in initialize; an empty list of workspace folders works.
-        if (params.getRootUri() == null && params.getRootPath() == null && params.getWorkspaceFolders() == null) {
-            params.setWorkspaceFolders(List.of());
+        // Without a root Xtext reads workspace folders only if the client announced them, and fails in
+        // initialize otherwise: folders sent unannounced are used, and no folders at all work too.
+        if (params.getRootUri() == null && params.getRootPath() == null) {
+            if (params.getWorkspaceFolders() == null) {
+                params.setWorkspaceFolders(List.of());
+            }
             workspace.setWorkspaceFolders(true);
         }
         return super.initialize(params);

@@ -4,6 +4,8 @@ import org.eclipse.lsp4j.services.LanguageServer;
 import org.eclipse.xtext.ide.server.ILanguageServerShutdownAndExitHandler;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.ServerModule;
+import org.eclipse.xtext.ide.server.concurrent.IRequestManager;
+import org.eclipse.xtext.ide.server.concurrent.RequestManager;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 
 import com.google.inject.AbstractModule;
@@ -27,6 +29,8 @@ public final class MironServerModule {
                 bind(IResourceServiceProvider.Registry.class).toProvider(MironLanguages.class);
                 bind(LanguageServer.class).to(MironLanguageServerImpl.class);
                 bind(LanguageServerImpl.class).to(MironLanguageServerImpl.class);
+                bind(IRequestManager.class).to(GuardedRequestManager.class);
+                bind(RequestManager.class).to(GuardedRequestManager.class);
                 if (!exitProcess) {
                     bind(ILanguageServerShutdownAndExitHandler.class).to(ILanguageServerShutdownAndExitHandler.NullImpl.class);
                 }

@@ -28,6 +28,7 @@ public final class LspBenchmark {
     public static void main(String[] args) throws Exception {
         System.out.println("MIRoN language server latencies (" + RUNS + " runs after " + WARM_UP + " warm-up runs; ms)");
         System.out.printf(Locale.ROOT, "%-58s %8s %8s %8s%n", "measure", "median", "p90", "max");
+        ServerStartup.benchmark();
         for (String example : List.of("intralogistics", "hospital-delivery")) {
             benchmark(example);
         }

@@ -49,6 +49,49 @@ public class RobustnessLspTest {
         assertAlive();
     }
 
+    /** Navigation from a reference that resolves to nothing: no definition, and no error response. */
+    @Test
+    public void navigationFromBrokenReferences() throws Exception {
+        Path miron = session.workspace.resolve("intralogistics.miron");
+        String text = Files.readString(miron).replace("affects roqme.safety++", "affects roqme.safetyy++");
+        String uri = session.client.open(miron, text);
+        session.client.awaitDiagnostics(uri, IntralogisticsLspTest::hasErrors);
+        TextDocumentIdentifier doc = new TextDocumentIdentifier(uri);
+        Position broken = IntralogisticsLspTest.positionAfter(text, "affects roqme.safe");
+        assertTrue(session.client.server().getTextDocumentService().definition(new DefinitionParams(doc, broken))
+                .get(60, TimeUnit.SECONDS).getLeft().isEmpty());
+        // References answer (Xtext lists the broken reference itself), hover too: no error response.
+        assertNotNull(session.client.server().getTextDocumentService().references(new org.eclipse.lsp4j.ReferenceParams(doc,
+                broken, new org.eclipse.lsp4j.ReferenceContext(true))).get(60, TimeUnit.SECONDS));
+        session.client.server().getTextDocumentService().hover(new HoverParams(doc, broken)).get(60, TimeUnit.SECONDS);
+        assertAlive();
+    }
+
+    /** Formatting a file that does not parse changes nothing (as `miron format`), without an error. */
+    @Test
+    public void formattingWithSyntaxErrorsLeavesTheFileAlone() throws Exception {
+        String uri = session.client.open(session.workspace.resolve("broken.miron"),
+                Files.readString(session.workspace.resolve("intralogistics.miron")).replaceFirst("\\{", "{{ \""));
+        session.client.awaitDiagnostics(uri, IntralogisticsLspTest::hasErrors);
+        assertTrue(session.client.server().getTextDocumentService().formatting(new org.eclipse.lsp4j.DocumentFormattingParams(
+                new TextDocumentIdentifier(uri), new org.eclipse.lsp4j.FormattingOptions(4, true))).get(60, TimeUnit.SECONDS).isEmpty());
+        assertAlive();
+    }
+
+    /** A client that sends workspace folders without announcing the capability is served on them. */
+    @Test
+    public void workspaceFoldersWithoutCapabilities() throws Exception {
+        try (LspClient client = new LspClient()) {
+            org.eclipse.lsp4j.InitializeParams params = new org.eclipse.lsp4j.InitializeParams();
+            params.setWorkspaceFolders(List.of(new org.eclipse.lsp4j.WorkspaceFolder(LspClient.uri(session.workspace), "w")));
+            client.server().initialize(params).get(60, TimeUnit.SECONDS);
+            client.server().initialized(new org.eclipse.lsp4j.InitializedParams());
+            String uri = client.open(session.workspace.resolve("intralogistics.miron"));
+            // Its imports resolve: the folder's .bt and .roqme are in the workspace.
+            client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
+        }
+    }
+
     @Test
     public void hugeFile() throws Exception {
         StringBuilder text = new StringBuilder("roqme Huge\n");

@@ -157,7 +157,11 @@ final class DecisionExplainer {
         List<String> parts = new ArrayList<>();
         for (int slot : conditionInputs[rule]) {
             InputSpec in = inputBySlot.get(slot);
-            parts.add(in.name() + " = " + value(in, activity.param[slot]).asText());
+            JsonNode v = value(in, activity.param[slot]);
+            // A metric reads as people say it (0.16), not as a double prints (0.15683722074396464).
+            parts.add(in.name() + " = " + (v.isFloatingPointNumber()
+                    ? BigDecimal.valueOf(v.asDouble()).round(new java.math.MathContext(2)).stripTrailingZeros().toPlainString()
+                    : v.asText()));
         }
         return parts.isEmpty() ? "" : " (" + String.join(", ", parts) + ")";
     }
