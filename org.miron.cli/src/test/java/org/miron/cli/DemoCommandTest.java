@@ -41,6 +41,10 @@ public class DemoCommandTest {
         String told = runDemo(3);
         assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 3; the engine decides "
                 + "with the native backend."));
+        // Every adaptation says why: the rule that forced it, the impacts, or the preset nothing overrode.
+        assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch): rule noBattery (power_autonomy = 0."));
+        assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge (behaviour tree switches branch): the preset: "
+                + "no rule or impact asks for another value"));
     }
 
     /**

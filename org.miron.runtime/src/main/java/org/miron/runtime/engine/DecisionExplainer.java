@@ -117,7 +117,10 @@ final class DecisionExplainer {
             }
         }
         if (count <= 1 || m.utilityMetric[v].length == 0 || runnerUp < 0) {
-            why.put("because", byRules.isEmpty() ? "no other value" : byRules);
+            why.put("because", !byRules.isEmpty() ? byRules
+                    : count <= 1 ? "no other value"
+                    : vp.preset() != null && vp.preset() == chosen ? "the preset: no rule or impact asks for another value"
+                    : "kept: no rule or impact asks for another value");
             return why;
         }
         why.set("runnerUp", vp.values().get(runnerUp));
