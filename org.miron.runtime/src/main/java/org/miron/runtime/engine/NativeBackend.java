@@ -201,17 +201,7 @@ public final class NativeBackend implements SolverBackend {
 
     /** Copies the parameters into their slots; returns the name of a missing one, or null. */
     private String read(Map<String, Object> params) {
-        for (int s = 0; s < param.length; s++) {
-            Object o = params.get(m.paramNames[s]);
-            if (o instanceof Boolean b) {
-                param[s] = b ? 1 : 0;
-            } else if (o instanceof Number x) {
-                param[s] = x.doubleValue();
-            } else {
-                return m.paramNames[s];
-            }
-        }
-        return null;
+        return m.readParams(params, param);
     }
 
     /** Every value, or only the pinned one under an override; false when a pin is out of range. */

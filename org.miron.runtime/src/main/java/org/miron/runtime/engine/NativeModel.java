@@ -31,7 +31,7 @@ final class NativeModel {
     final String[] decisionNames;
     final int[] sizes;
     final int[] preset;
-    /** Parameter names by slot; {@link NativeBackend} copies the solve's values into the slots. */
+    /** Parameter names by slot; {@link #readParams} copies a solve's values into the slots. */
     final String[] paramNames;
     final int[] inputSlot, inputValueSlot, currentSlot;
     /** Per varpoint, per utility: the metric's slot and its table. */
@@ -195,5 +195,23 @@ final class NativeModel {
             v = parent[v] = parent[parent[v]];
         }
         return v;
+    }
+
+    /**
+     * Copies the parameters into their slots of {@code param} (Booleans as 0/1); returns the name
+     * of a missing one, or null. The backend and the decision explainer read them the same way.
+     */
+    String readParams(Map<String, Object> params, double[] param) {
+        for (int s = 0; s < paramNames.length; s++) {
+            Object o = params.get(paramNames[s]);
+            if (o instanceof Boolean b) {
+                param[s] = b ? 1 : 0;
+            } else if (o instanceof Number x) {
+                param[s] = x.doubleValue();
+            } else {
+                return paramNames[s];
+            }
+        }
+        return null;
     }
 }

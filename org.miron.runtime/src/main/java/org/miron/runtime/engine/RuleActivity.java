@@ -34,15 +34,8 @@ final class RuleActivity {
 
     /** Null when an input is missing (the backend then failed anyway). */
     Activity evaluate(Map<String, Object> params, Map<String, Integer> decisions, List<String> dropped) {
-        for (int s = 0; s < param.length; s++) {
-            Object o = params.get(m.paramNames[s]);
-            if (o instanceof Boolean b) {
-                param[s] = b ? 1 : 0;
-            } else if (o instanceof Number x) {
-                param[s] = x.doubleValue();
-            } else {
-                return null;
-            }
+        if (m.readParams(params, param) != null) {
+            return null;
         }
         boolean[] asked = new boolean[m.varpointCount];
         for (int v = 0; v < m.varpointCount; v++) {
