@@ -60,8 +60,16 @@ public class LiveProviderTest {
         }
     }
 
+    private static final java.util.concurrent.atomic.AtomicLong SAMPLE_TIME = new java.util.concurrent.atomic.AtomicLong(System.currentTimeMillis());
+
+    /**
+     * A context sample with a time of its own, as a robot's monitor sends them: the broker may
+     * replay its cached copy to us when anyone subscribes (see BusProxy), and only the time tells
+     * that copy from a new sample, so counts stay exact however the subscriptions interleave.
+     */
     private static String context(String name, String type, String value) {
-        return "{\"name\":\"" + name + "\",\"namespace\":\"Intralogistics\",\"type\":\"" + type + "\",\"value\":" + value + "}";
+        return "{\"name\":\"" + name + "\",\"namespace\":\"Intralogistics\",\"type\":\"" + type + "\",\"value\":" + value
+                + ",\"time\":" + SAMPLE_TIME.incrementAndGet() + "}";
     }
 
     @Test
