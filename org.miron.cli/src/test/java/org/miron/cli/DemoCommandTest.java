@@ -129,8 +129,8 @@ public class DemoCommandTest {
     /**
      * The second example tells its own story from its own demo/ inputs: near misses and a dense
      * corridor undermine safety (careful navigation, slow and wide), they disturb the ward (the robot
-     * disinfects after the handover), a draining battery sends it to charge first, and a charge
-     * brings it back.
+     * disinfects after the handover), a low battery (a derived context the provider publishes)
+     * sends it to charge first, and a charge brings it back.
      */
     @Test
     public void theHospitalDemoTellsItsOwnStory() throws Exception {
@@ -153,11 +153,13 @@ public class DemoCommandTest {
         assertTrue(told, 0 <= nearMiss && nearMiss < careful && nearMiss < wide);
         assertTrue(told, told.contains("crowded fired: undermines safety (veryhigh)"));
         assertTrue(told, told.contains("nearMisses fired: undermines comfort → comfort"));
+        // the derived context lowBattery (battery < 25) comes from the provider and triggers the rule
+        int low = told.indexOf("RoQME   lowBattery = true");
+        int charge = told.indexOf("ADAPT   preparation -> charge (behaviour tree switches branch): rule lowBattery (lowBattery = true");
         int draining = told.indexOf("draining fired: undermines autonomy (high) → autonomy");
-        int charge = told.indexOf("ADAPT   preparation -> charge (behaviour tree switches branch)");
         int charged = told.indexOf("charged fired: clears autonomy, reinforces autonomy (high) → autonomy");
         int none = told.indexOf("ADAPT   preparation -> none", charge);
-        assertTrue(told, 0 <= draining && draining < charge && charge < charged && charged < none);
+        assertTrue(told, 0 <= low && low < charge && charge < charged && charged < none && draining > low);
         assertTrue(told, told.indexOf("ROBOT   toCharger", charge) > 0);
         String report = Files.readString(dir.resolve("report.html"));
         assertTrue(report, report.contains("<tr><td>draining</td><td>undermines autonomy (HIGH)</td>"));

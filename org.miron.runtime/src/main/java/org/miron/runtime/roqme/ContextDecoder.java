@@ -36,6 +36,7 @@ public final class ContextDecoder {
     }
 
     private final Map<String, List<Variable>> byName = new HashMap<>();
+    private final java.util.Set<String> derivedNames = new java.util.HashSet<>();
     private final CompiledModel model;
 
     public ContextDecoder(CompiledModel model) {
@@ -43,11 +44,25 @@ public final class ContextDecoder {
         for (Variable v : model.model().contexts()) {
             if (v.derived() == null || v.derived().isNull()) {
                 byName.computeIfAbsent(v.name(), k -> new java.util.ArrayList<>()).add(v);
+            } else {
+                derivedNames.add(v.name());
             }
         }
     }
 
-    /** Decodes a body; a streaming read (no tree): the replay decodes a trace line by line with it. */
+    /**
+     * Whether a body names one of the model's derived contexts and says {@code "derived": true}: the
+     * provider's own publication of a value it computes (see LiveProvider), which comes back to it
+     * on the bus and in recordings. Not an input, and not an error either.
+     */
+    private boolean ownDerived(String name, boolean derivedFlag) {
+        return derivedFlag && derivedNames.contains(name);
+    }
+
+    /**
+     * Decodes a body; a streaming read (no tree): the replay decodes a trace line by line with it.
+     * Null for the provider's own publication of a derived context (nothing to apply).
+     */
     public Sample decode(byte[] body) throws BadContext {
         try (JsonParser p = Json.MAPPER.getFactory().createParser(body)) {
             return decode(p);
@@ -74,6 +89,7 @@ public final class ContextDecoder {
         JsonNode value = null;
         Long time = null;
         boolean timeBad = false;
+        boolean derivedFlag = false;
         String field;
         while ((field = p.nextFieldName()) != null) {
             JsonToken t = p.nextToken();
@@ -82,6 +98,7 @@ public final class ContextDecoder {
                 case "namespace" -> ns = t == JsonToken.VALUE_STRING ? p.getText() : "";
                 case "type" -> type = t == JsonToken.VALUE_STRING ? p.getText() : "";
                 case "value" -> value = t.isScalarValue() ? scalar(p, t) : p.readValueAsTree();
+                case "derived" -> derivedFlag = t == JsonToken.VALUE_TRUE;
                 case "time" -> {
                     if (t.isNumeric()) {
                         time = p.getValueAsLong();
@@ -98,7 +115,7 @@ public final class ContextDecoder {
         if (timeBad) {
             throw new BadContext(Problem.MALFORMED, "time must be a number of ms");
         }
-        return decode(name, ns, type, value, time);
+        return ownDerived(name, derivedFlag) ? null : decode(name, ns, type, value, time);
     }
 
     private static JsonNode scalar(JsonParser p, JsonToken t) throws java.io.IOException {
@@ -120,6 +137,9 @@ public final class ContextDecoder {
         if (n.has("time") && !n.get("time").isNumber()) {
             throw new BadContext(Problem.MALFORMED, "time must be a number of ms");
         }
+        if (ownDerived(n.path("name").asText(""), n.path("derived").asBoolean(false))) {
+            return null;
+        }
         return decode(n.path("name").isTextual() ? n.get("name").asText() : null,
                 n.path("namespace").isTextual() ? n.get("namespace").asText() : "", n.path("type").asText(""),
                 n.get("value"), n.has("time") ? n.get("time").asLong() : null);
@@ -138,6 +158,9 @@ public final class ContextDecoder {
                     break;
                 }
             }
+        }
+        if (v == null && derivedNames.contains(name)) {
+            throw new BadContext(Problem.UNKNOWN, "context " + name + " is derived: the provider computes it, it is not an input");
         }
         if (v == null) {
             throw new BadContext(Problem.UNKNOWN, "unknown context " + (ns.isEmpty() ? "" : ns + ".") + name);

@@ -65,6 +65,9 @@ public final class LiveProvider implements AutoCloseable {
     private Path stateFile;
     private EvidenceState.Saved saved;
     private long lastSave;
+    /** Derived contexts (not events: an event has no value to hold) and what was last published of each. */
+    private final List<RoqmeModel.Variable> derived;
+    private final Map<String, Object> publishedDerived = new java.util.HashMap<>(); // provider thread only
     private volatile long ticks;
     private volatile long fired;
 
@@ -76,6 +79,9 @@ public final class LiveProvider implements AutoCloseable {
         this.periodMs = periodMs;
         this.statusIntervalMs = statusIntervalMs;
         this.decoder = new ContextDecoder(model);
+        this.derived = model.model().contexts().stream()
+                .filter(v -> v.derived() != null && !v.derived().isNull() && !"eventtype".equals(v.type().kind()))
+                .toList();
         this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived)
                 .onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "roqme-provider");
@@ -161,6 +167,7 @@ public final class LiveProvider implements AutoCloseable {
         last = start;
         nextStatus = start;
         publishStatus(start);
+        publishDerived(p, start);
         try {
             while (running) {
                 try {
@@ -196,6 +203,7 @@ public final class LiveProvider implements AutoCloseable {
             publishTick(p.tick());
             ticks++;
         }
+        publishDerived(p, now);
         if (stateFile != null && now - lastSave >= Math.max(1000, periodMs)) {
             save(p, now);
         }
@@ -220,6 +228,9 @@ public final class LiveProvider implements AutoCloseable {
     private void input(Provider p, Arrival a, long time) {
         try {
             ContextDecoder.Sample s = decoder.decode(a.body());
+            if (s == null) {
+                return; // our own derived context, back from the bus
+            }
             status.contexts.incrementAndGet();
             p.input(s.slot(), s.value(), time);
         } catch (ContextDecoder.BadContext e) {
@@ -244,6 +255,30 @@ public final class LiveProvider implements AutoCloseable {
             o.put("value", t.estimates()[i++]);
             o.put("time", now);
             bus.publishRetained("estimate\0" + b.decl().namespace() + "\0" + b.decl().name(), Topics.ESTIMATE, Json.write(o));
+        }
+    }
+
+    /**
+     * Publishes every derived context whose value changed (and each once it is known) on
+     * {@code roqme.context} with {@code "derived": true}: the engine reads them like any context
+     * (a MIRoN rule on {@code qos.lowBattery}, seed §3), and the provider skips them when they
+     * come back. Retained, so a restarted broker's cache gets them again.
+     */
+    private void publishDerived(Provider p, long now) {
+        for (RoqmeModel.Variable v : derived) {
+            Object value = p.value(v.id());
+            if (value == null || value.equals(publishedDerived.get(v.id()))) {
+                continue;
+            }
+            publishedDerived.put(v.id(), value);
+            ObjectNode o = Json.object();
+            o.put("name", v.name());
+            o.put("namespace", v.namespace());
+            o.put("type", v.type().kind());
+            o.set("value", Json.MAPPER.valueToTree(value));
+            o.put("time", now);
+            o.put("derived", true);
+            bus.publishRetained("context\0" + v.namespace() + "\0" + v.name(), Topics.CONTEXT, Json.write(o));
         }
     }
 

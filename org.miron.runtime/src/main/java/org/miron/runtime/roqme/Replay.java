@@ -66,6 +66,9 @@ public final class Replay {
             } catch (ContextDecoder.BadContext e) {
                 throw new TraceException(traceName + ":" + lineNo + ": error [trace]: " + e.getMessage());
             }
+            if (s == null) {
+                continue; // a derived context the provider published: recorded with the inputs, not one
+            }
             if (s.time() == null) {
                 throw new TraceException(traceName + ":" + lineNo + ": error [trace]: the record has no time (ms)");
             }

@@ -154,6 +154,40 @@ public class LiveProviderTest {
         assertEquals(5, provider.rejected());
     }
 
+    /** The engine reads derived contexts (a MIRoN rule on qos.HumanNearby): the provider publishes them on change. */
+    @Test
+    public void derivedContextsArePublishedOnChangeAndNotTakenBackAsInputs() throws Exception {
+        startBus();
+        provider = new LiveProvider(model, PERIOD, 5000, ep.busIn(), ep.busOut()).start();
+        assertTrue(provider.awaitReady(TIMEOUT));
+        awaitAccepted("BatteryLevel", "number", "50");
+        long before = provider.contexts();
+        input.publish(Topics.CONTEXT, context("HumanDistance", "number", "0.5"));
+        JsonNode near = probe.await(Topics.CONTEXT, b -> b.path("name").asText().equals("HumanNearby"), TIMEOUT);
+        assertNotNull("HumanNearby published once HumanDistance is known", near);
+        assertTrue(near.path("value").asBoolean(false));
+        assertTrue(near.path("derived").asBoolean(false));
+        assertEquals("Intralogistics", near.path("namespace").asText());
+        assertEquals("boolean", near.path("type").asText());
+        input.publish(Topics.CONTEXT, context("HumanDistance", "number", "0.7")); // still near: nothing new
+        input.publish(Topics.CONTEXT, context("HumanDistance", "number", "3"));
+        assertNotNull(probe.await(Topics.CONTEXT, b -> b.path("name").asText().equals("HumanNearby")
+                && b.path("value").isBoolean() && !b.path("value").asBoolean(), TIMEOUT));
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (provider.contexts() < before + 3 && System.currentTimeMillis() < end) {
+            Thread.sleep(20);
+        }
+        assertEquals("the three samples count, our own HumanNearby copies do not", before + 3, provider.contexts());
+        assertEquals("one publication per change (a cache replay repeats a body: counted once)", 2, probe.messages(Topics.CONTEXT).stream()
+                .filter(m -> m.body().path("name").asText().equals("HumanNearby")).map(m -> m.body().toString()).distinct().count());
+        assertEquals(0, provider.rejected());
+        // from anyone else, a derived context is no input: refused, and the message says why
+        input.publish(Topics.CONTEXT, context("HumanNearby", "boolean", "true"));
+        JsonNode st = probe.await(Topics.ROQME_STATUS, b -> b.path("counters").path("unknownInput").asLong() == 1, TIMEOUT);
+        assertNotNull(st);
+        assertTrue(st.path("lastError").path("message").asText(), st.path("lastError").path("message").asText().contains("derived"));
+    }
+
     @Test
     public void restartedProviderResumesEstimatesWithinTwoPeriodsWithTheCachedContexts() throws Exception {
         startBus();
