@@ -38,11 +38,17 @@ const GENERATE = 'miron.generate';
  */
 class MironClient extends LanguageClient {
     quietStart = false;
+    /** The first error of the current start, for the message when it fails. */
+    startProblem: string | undefined;
 
     override error(message: string, data?: unknown, showNotification: boolean | 'force' = true): void {
         if (/^Server process exited with code 0\b/.test(message)) {
             this.info(message, data, false);
             return;
+        }
+        if (this.quietStart && (!this.startProblem || /exited with/.test(message))) {
+            // The exit code says more than the failed request it caused.
+            this.startProblem = message.replace(/\.$/, '');
         }
         super.error(message, data, this.quietStart ? false : showNotification);
     }
@@ -222,6 +228,11 @@ async function start(): Promise<void> {
         outputChannel: output,
         traceOutputChannel: output,
         errorHandler: errorHandler(),
+        // No retry, and no message of vscode-languageclient's own: start() reports the failure.
+        initializationFailedHandler: (error) => {
+            output.appendLine(`The language server failed to initialize: ${errorText(error)}`);
+            return false;
+        },
         middleware: {
             executeCommand: (command, args, next) =>
                 command === GENERATE ? generate(commandContext, args[0], (uri) => next(command, [uri])) : next(command, args),
@@ -248,6 +259,10 @@ async function start(): Promise<void> {
     setFallbackGenerate(false);
     try {
         await c.start();
+        // vscode-languageclient 9 resolves start() when the server exits during initialize.
+        if (c.state !== State.Running) {
+            throw new Error(c.startProblem ?? 'the server stopped while starting');
+        }
         c.quietStart = false;
         status.set('running');
         const commands = c.initializeResult?.capabilities.executeCommandProvider?.commands ?? [];
