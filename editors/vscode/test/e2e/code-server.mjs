@@ -356,7 +356,10 @@ async function commonChecks(page, u, { diagnostic, btDiagnostic }) {
         await u.problem(diagnostic).waitFor({ timeout: T });
         await page.screenshot({ path: join(out, 'problems.png') });
     });
-    await check('the .xml behaviour tree reaches the server: its diagnostics are in the Problems view', async () => {
+    await check('the .xml behaviour tree reaches the server as BT (didOpen in the LSP trace), the other .xml does not', async () => {
+        const opened = (file, language) => new RegExp(`"uri": "file://[^"]*/${file.replace('.', '\\.')}",\\s*"languageId": "${language}"`);
+        await until('didOpen of mission.xml as bt', async () => opened('mission.xml', 'bt').test(outputLog()));
+        if (/"uri": "file:\/\/[^"]*\/pom\.xml",\s*"languageId"/.test(outputLog())) throw new Error('pom.xml was sent to the server');
         await u.showProblems();
         await u.problem(btDiagnostic).waitFor({ timeout: T });
     });
