@@ -173,9 +173,12 @@ const env = { ...process.env, XDG_DATA_HOME: join(scratch, 'xdg-data'), XDG_CONF
 
 const install = spawnSync(codeServer, [...common, '--install-extension', vsix], { encoding: 'utf8', env });
 if (install.error || install.status !== 0) {
-    console.error(`code-server --install-extension failed: ${install.error ?? install.stderr}\n` +
-        'Install code-server with scripts/ensure-code-server.sh and set CODE_SERVER.');
-    process.exit(2);
+    const message = `${codeServer} --install-extension failed: ${install.error ?? install.stderr}`;
+    console.error(`${message}\nInstall code-server with scripts/ensure-code-server.sh and set CODE_SERVER.`);
+    results.push({ name: 'code-server installs the extension', time: 0, error: new Error(message) });
+    writeJunit();
+    console.log('0 passed, 1 failed');
+    process.exit(1);
 }
 
 /** Everything the extension wrote to its output channel so far (VS Code logs it to a file). */
