@@ -164,15 +164,18 @@ async function ensureStarted(): Promise<void> {
 
 async function restart(): Promise<void> {
     const previous = starting;
-    starting = (async () => {
+    const mine = (async () => {
         await previous;
         await stop();
         await start();
     })();
+    starting = mine;
     try {
-        await starting;
+        await mine;
     } finally {
-        starting = undefined;
+        if (starting === mine) {
+            starting = undefined;
+        }
     }
 }
 
