@@ -5,7 +5,8 @@
 // (workspace/didChangeWatchedFiles: "fake-miron: <file name> changed on disk") and implements the
 // workspace/executeCommand miron.generate (not with FAKE_MIRON_NO_GENERATE=1: it writes
 // generated/<name>.ext.xml next to the model) and miron.convert (answers only). With
-// FAKE_MIRON_FAIL=1 it exits at once with code 1, as a server that cannot start.
+// FAKE_MIRON_FAIL=1 it exits at once with code 1, as a server that cannot start. Semantic tokens:
+// a tree after `main.` and a property after `roqme.`.
 // Usage: fake-miron.mjs lsp | generate FILE
 import { appendFileSync, mkdirSync, writeFileSync } from 'node:fs';
 import { basename, dirname, join } from 'node:path';
@@ -28,6 +29,29 @@ if (process.env.FAKE_MIRON_FAIL) {
 const offerGenerate = !process.env.FAKE_MIRON_NO_GENERATE;
 const log = (m) => { if (process.env.FAKE_MIRON_LOG) appendFileSync(process.env.FAKE_MIRON_LOG, m + '\n'); };
 
+/** The open documents' texts (full synchronisation). */
+const texts = new Map();
+
+/**
+ * Semantic tokens as miron lsp sends them for a tree after an alias (`main.Charge`: class) and a
+ * RoQME property (`roqme.power_autonomy`: property), in LSP's relative encoding.
+ */
+function semanticTokens(text) {
+    const data = [];
+    let previousLine = 0;
+    let previousStart = 0;
+    text.split('\n').forEach((line, lineNo) => {
+        for (const m of line.matchAll(/\b(?:main\.(\w+)|roqme\.(\w+))/g)) {
+            const name = m[1] ?? m[2];
+            const start = m.index + m[0].length - name.length;
+            data.push(lineNo - previousLine, lineNo === previousLine ? start - previousStart : start, name.length, m[1] ? 0 : 1, 0);
+            previousLine = lineNo;
+            previousStart = start;
+        }
+    });
+    return data;
+}
+
 function send(message) {
     const body = Buffer.from(JSON.stringify({ jsonrpc: '2.0', ...message }), 'utf8');
     process.stdout.write(`Content-Length: ${body.length}\r\n\r\n`);
@@ -43,14 +67,19 @@ function handle(msg) {
                     capabilities: {
                         textDocumentSync: { openClose: true, change: 1 },
                         executeCommandProvider: { commands: offerGenerate ? ['miron.generate', 'miron.convert'] : ['miron.convert'] },
+                        semanticTokensProvider: { legend: { tokenTypes: ['class', 'property'], tokenModifiers: [] }, full: true },
                     },
                     serverInfo: { name: 'fake-miron', version: '0' },
                 },
             });
             break;
+        case 'textDocument/semanticTokens/full':
+            send({ id: msg.id, result: { data: semanticTokens(texts.get(msg.params.textDocument.uri) ?? '') } });
+            break;
         case 'textDocument/didOpen':
         case 'textDocument/didChange': {
             const uri = msg.params.textDocument.uri;
+            texts.set(uri, msg.params.textDocument.text ?? msg.params.contentChanges?.at(-1)?.text ?? '');
             const name = decodeURIComponent(uri.replace(/^.*\//, ''));
             send({
                 method: 'textDocument/publishDiagnostics', params: {

@@ -55,6 +55,8 @@ const serverCommand = real ? process.env.MIRON_SERVER : process.execPath;
 const serverArgs = real ? JSON.parse(process.env.MIRON_SERVER_ARGS || '[]') : [fakeServer];
 
 const results = [];
+/** Thrown by a check whose precondition does not hold: reported as skipped, with the reason. */
+class Skip extends Error {}
 async function check(name, fn) {
     const started = Date.now();
     try {
@@ -62,6 +64,11 @@ async function check(name, fn) {
         results.push({ name, time: (Date.now() - started) / 1000 });
         console.log(`✔ ${name} (${((Date.now() - started) / 1000).toFixed(1)} s)`);
     } catch (err) {
+        if (err instanceof Skip) {
+            results.push({ name, time: (Date.now() - started) / 1000, skipped: err.message });
+            console.log(`- ${name}: skipped: ${err.message}`);
+            return;
+        }
         results.push({ name, time: (Date.now() - started) / 1000, error: err });
         console.log(`✖ ${name}\n  ${String(err?.stack ?? err).split('\n').join('\n  ')}`);
         await page?.screenshot({ path: join(out, `failed-${results.length}.png`) }).catch(() => {});
@@ -97,14 +104,15 @@ async function waitForHttp(url, ms) {
 function writeJunit() {
     const esc = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
     const failures = results.filter((r) => r.error).length;
+    const skipped = results.filter((r) => r.skipped).length;
     const lines = ['<?xml version="1.0" encoding="UTF-8"?>',
-        `<testsuite name="vscode-e2e-${mode}" tests="${results.length}" skipped="0" failures="${failures}" errors="0" ` +
+        `<testsuite name="vscode-e2e-${mode}" tests="${results.length}" skipped="${skipped}" failures="${failures}" errors="0" ` +
         `timestamp="${new Date().toISOString().replace(/\.\d+Z$/, '')}" hostname="localhost" time="0">`];
     for (const r of results) {
         const head = `  <testcase name="${esc(r.name)}" classname="vscode.e2e.${mode}" time="${r.time.toFixed(3)}"`;
         lines.push(r.error
             ? `${head}>\n    <failure message="${esc(r.error.message ?? r.error)}">${esc(r.error.stack ?? r.error)}</failure>\n  </testcase>`
-            : `${head}/>`);
+            : r.skipped ? `${head}>\n    <skipped message="${esc(r.skipped)}"/>\n  </testcase>` : `${head}/>`);
     }
     lines.push('</testsuite>', '');
     const target = resolve(extensionRoot, process.env.MIRON_JUNIT_XML || `../build/test-results/test/TEST-vscode-e2e-${mode}.xml`);
@@ -234,8 +242,10 @@ try {
 
 writeJunit();
 const failed = results.filter((r) => r.error).length;
-console.log(`vscode e2e (${mode} server): ${((Date.now() - started) / 1000).toFixed(0)} s in the browser`);
-console.log(`${results.length - failed} passed, ${failed} failed`);
+const skippedChecks = results.filter((r) => r.skipped).length;
+console.log(`vscode e2e (${mode} server): ${((Date.now() - started) / 1000).toFixed(0)} s in the browser` +
+    (skippedChecks ? `, ${skippedChecks} skipped` : ''));
+console.log(`${results.length - failed - skippedChecks} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);
 
 // ---------------------------------------------------------------- what a user does
@@ -400,6 +410,7 @@ async function fakeChecks(page) {
         await u.lines('implies task = task::dock').nth(1).waitFor({ timeout: T }); // the example's rule, and the snippet's
         await u.lines('rule lowBattery : roqme.power_autonomy').first().waitFor({ timeout: T });
     });
+    await semanticCheck(page, u);
     await check('MIRoN: Generate shows one message, with "Open generated files" that opens them', async () => {
         await u.open('intralogistics.miron');
         await u.clearToasts();
@@ -474,6 +485,44 @@ async function fakeChecks(page) {
     });
 }
 
+/**
+ * The answers to textDocument/semanticTokens/full for `file` in the LSP trace: the number of
+ * integers of each answer's data (5 per token).
+ */
+function semanticAnswers(trace, file) {
+    const ids = [...trace.matchAll(/Sending request 'textDocument\/semanticTokens\/full - \((\d+)\)'\.\r?\nParams: \{\s*"textDocument": \{\s*"uri": "([^"]*)"/g)]
+        .filter((m) => m[2].endsWith(`/${file}`)).map((m) => m[1]);
+    return ids.flatMap((id) => {
+        const answer = new RegExp(`Received response 'textDocument/semanticTokens/full - \\(${id}\\)' in \\d+ms\\.\\r?\\nResult: \\{\\s*"data": \\[([^\\]]*)\\]`).exec(trace);
+        return answer ? [answer[1].split(',').filter((x) => x.trim()).length] : [];
+    });
+}
+
+/** The server's semantic tokens colour what the grammar leaves in the default colour. */
+async function semanticCheck(page, u) {
+    await check('semantic highlighting: a tree name after an alias and a property in a rule are coloured', async () => {
+        // The stand-in sends tokens for both; miron lsp once it has them (issue 23, item 15, server
+        // side): until then the TextMate grammar leaves both in the default colour, and this check
+        // is skipped.
+        await u.open('intralogistics.miron');
+        const answers = await until('a semantic tokens answer for intralogistics.miron', async () => {
+            const a = semanticAnswers(outputLog(), 'intralogistics.miron');
+            return a.length > 0 && a;
+        });
+        if (answers.every((tokens) => tokens === 0)) {
+            throw new Skip('the server answers textDocument/semanticTokens/full with no tokens');
+        }
+        // mtk1 is the editor's default foreground: a coloured token has another class.
+        const colour = async (line, word) => until(`${word} coloured on "${line}"`, async () => {
+            const classes = await u.lines(line).first().locator('span span').evaluateAll((spans, w) =>
+                spans.filter((x) => x.textContent.trim() === w).map((x) => x.className), word);
+            return classes.length > 0 && classes.every((c) => c !== 'mtk1') && classes;
+        });
+        await colour('dock : main.Charge', 'Charge');
+        await colour('rule noBattery', 'power_autonomy');
+    });
+}
+
 async function realChecks(page) {
     const u = ui(page);
     await commonChecks(page, u, { diagnostic: 'nonexistent', btDiagnostic: 'NowhereTree' });
@@ -499,6 +548,7 @@ async function realChecks(page) {
         await until('textDocument/semanticTokens in the LSP trace', async () =>
             /semanticTokensProvider/.test(outputLog()) && /Sending request 'textDocument\/semanticTokens\/full/.test(outputLog()));
     });
+    await semanticCheck(page, u);
     await check('MIRoN: Generate on a model with errors: one error message, nothing written', async () => {
         await u.open('intralogistics.miron');
         await u.clearToasts();
