@@ -21,7 +21,7 @@
 //                   publishing one warning per file. The two run different checks: the extension's
 //                   own behaviour with the stand-in, the server's features with the real one.
 //   MIRON_SERVER_ARGS  JSON array for miron.server.args
-//   MIRON_E2E_TIMEOUT  the longest wait for one condition, in ms (default 90000)
+//   MIRON_E2E_TIMEOUT  the longest wait for one condition, in ms (default 120000)
 // Writes screenshots, the code-server log and the extension's output to build/e2e/<mode>/.
 // Prints "N passed, N failed" and JUnit XML (MIRON_JUNIT_XML, default
 // ../build/test-results/test/TEST-vscode-e2e-<mode>.xml, where run-tests counts it).
@@ -42,7 +42,7 @@ const out = join(extensionRoot, 'build', 'e2e', mode);
 rmSync(out, { recursive: true, force: true });
 mkdirSync(out, { recursive: true });
 /** The longest wait for one condition: generous, for a loaded 2-core machine. */
-const T = Number(process.env.MIRON_E2E_TIMEOUT || 90000);
+const T = Number(process.env.MIRON_E2E_TIMEOUT || 120000);
 
 const candidates = [join(homedir(), '.cache', 'miron-e2e', 'code-server', 'node_modules', '.bin', 'code-server'),
     '/tmp/code-server/node_modules/.bin/code-server'];
@@ -580,8 +580,10 @@ async function realChecks(page) {
         await u.lines('BTCPP_format="4"').first().waitFor({ timeout: T });
         await page.screenshot({ path: join(out, 'converted.png') });
     });
-    await check('a restart is quiet: no "[Error] Server process exited with code 0"', async () => {
+    await check('a restart is quiet: no "[Error] Server process exited with code 0"; the status bar says starting, then running', async () => {
         await u.runCommand('MIRoN: Restart Language Server');
+        // The JVM takes seconds to start: long enough to see the state.
+        await u.expectStatus('starting');
         await until('a second start in the output', async () => (outputLog().match(/^Starting /gm) ?? []).length >= 2);
         await u.expectStatus('running');
         const errors = outputLog().split('\n').filter((l) => /\[Error/.test(l));
