@@ -535,6 +535,20 @@ async function realChecks(page) {
         await page.screenshot({ path: join(out, 'hover.png') });
         await page.keyboard.press('Escape');
     });
+    await check('F12 on a tree after an alias goes to its definition in the .bt', async () => {
+        await u.open('intralogistics.miron');
+        await u.cursorOn('main.Charge', 7);
+        await page.keyboard.press('F12');
+        await until('intralogistics.bt is the active editor', async () =>
+            (await page.locator('.tabs-container .tab.active').first().getAttribute('aria-label'))?.includes('intralogistics.bt'));
+        // The cursor line is highlighted (current-line) on the tree's declaration.
+        const line = await until('the cursor on the declaration of Charge', async () => {
+            const row = await page.locator('.editor-instance .monaco-editor .view-overlays .current-line').first().boundingBox();
+            const charge = await u.lines('<BehaviorTree ID="Charge">').first().boundingBox();
+            return row && charge && Math.abs(row.y - charge.y) < 2 && charge;
+        });
+        if (!line) throw new Error('no cursor line');
+    });
     await check('completion after task:: offers the varpoint\'s values', async () => {
         await u.open('typing.miron');
         await u.typeAtEnd('rule typed : roqme.safety < 0.5 implies task = task::');
