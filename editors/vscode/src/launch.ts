@@ -99,6 +99,8 @@ export interface GenerateOutcome {
     shownByServer: boolean;
     /** Problems that kept the generator from writing (`file:line:col: message`). */
     errors: string[];
+    /** The files written (paths or URIs, as the server gives them). */
+    written: string[];
 }
 
 /**
@@ -108,27 +110,27 @@ export interface GenerateOutcome {
  */
 export function describeResult(result: unknown): GenerateOutcome {
     if (result === null || result === undefined) {
-        return { message: 'MIRoN: Generate done.', ok: true, shownByServer: false, errors: [] };
+        return { message: 'MIRoN: Generate done.', ok: true, shownByServer: false, errors: [], written: [] };
     }
     if (typeof result === 'string') {
-        return { message: result, ok: !/^\s*(error|failed|not generated)\b/i.test(result), shownByServer: false, errors: [] };
+        return { message: result, ok: !/^\s*(error|failed|not generated)\b/i.test(result), shownByServer: false, errors: [], written: [] };
     }
     if (typeof result === 'object') {
         const r = result as { message?: unknown; written?: unknown; files?: unknown; errors?: unknown; success?: unknown; ok?: unknown };
         const errors = Array.isArray(r.errors) ? r.errors.map(String) : [];
         const ok = r.success !== false && r.ok !== false && (r.ok === true || errors.length === 0);
+        const written = (Array.isArray(r.written) ? r.written : Array.isArray(r.files) ? r.files : []).map(String);
         if (typeof r.message === 'string') {
-            return { message: r.message, ok, shownByServer: true, errors };
+            return { message: r.message, ok, shownByServer: true, errors, written };
         }
         let message = ok ? 'MIRoN: Generate done.' : 'MIRoN: Generate failed.';
-        const written = Array.isArray(r.written) ? r.written : Array.isArray(r.files) ? r.files : [];
         if (written.length > 0) {
             message += ` Wrote ${written.map((f) => path.basename(String(f))).join(', ')}.`;
         }
         if (errors.length > 0) {
             message += ` ${errors[0]}${errors.length > 1 ? ` (and ${errors.length - 1} more)` : ''}`;
         }
-        return { message, ok, shownByServer: false, errors };
+        return { message, ok, shownByServer: false, errors, written };
     }
-    return { message: String(result), ok: true, shownByServer: false, errors: [] };
+    return { message: String(result), ok: true, shownByServer: false, errors: [], written: [] };
 }

@@ -42,10 +42,56 @@ describe('package.json', () => {
         assert.ok(c.menus['editor/title'].some((m) => m.command === 'miron.generate' && /miron/.test(m.when)));
         const props = c.configuration.properties;
         assert.equal(props['miron.server.command'].default, 'miron');
-        assert.deepEqual(props['miron.server.command'].type, ['string', 'array']);
+        // A plain string, so that the Settings UI shows a text field (issue 23, item 14).
+        assert.equal(props['miron.server.command'].type, 'string');
+        assert.equal(props['miron.server.args'].type, 'array');
         assert.deepEqual(props['miron.server.args'].default, []);
-        for (const l of ['bt', 'roqme', 'miron']) {
+        assert.equal(props['miron.bt.detectXml'].default, true);
+        for (const l of ['bt', 'roqme', 'miron', 'xml']) {
             assert.ok(manifest.activationEvents.includes(`onLanguage:${l}`), `activation on ${l}`);
+        }
+    });
+    test('Generate and Convert in the command palette, for the right editors', () => {
+        const palette = Object.fromEntries(c.menus.commandPalette.map((m) => [m.command, m.when]));
+        assert.match(palette['miron.generate'], /editorLangId == miron/);
+        for (const v of ['3', '4']) {
+            const command = c.commands.find((x) => x.command === `miron.convertTo${v}`);
+            assert.equal(command.title, `Convert to BehaviorTree.CPP ${v}`);
+            assert.equal(command.category, 'MIRoN');
+            assert.equal(palette[`miron.convertTo${v}`], 'editorLangId == bt');
+        }
+    });
+    test('icon, repository, a description that names both BehaviorTree.CPP versions', () => {
+        const icon = readFileSync(join(extensionRoot, manifest.icon));
+        assert.equal(icon.subarray(1, 4).toString('ascii'), 'PNG', 'the icon is a PNG (vsce refuses SVG)');
+        assert.equal(icon.readUInt32BE(16), 128, 'width 128');
+        assert.equal(icon.readUInt32BE(20), 128, 'height 128');
+        assert.match(manifest.repository.url, /^https:\/\//);
+        assert.equal(manifest.repository.directory, 'editors/vscode');
+        assert.match(manifest.description, /BehaviorTree\.CPP 3 and 4/);
+        assert.doesNotMatch(manifest.scripts.package, /allow-missing-repository/);
+    });
+    test('snippets: tree, varpoint, rule and observation, each with a prefix, a body and a description', () => {
+        const prefixes = {};
+        for (const s of c.snippets) {
+            assert.ok(['bt', 'roqme', 'miron'].includes(s.language), s.language);
+            const snippets = JSON.parse(readFileSync(join(extensionRoot, s.path), 'utf8'));
+            for (const [name, snippet] of Object.entries(snippets)) {
+                assert.ok(snippet.prefix && snippet.body && snippet.description, `${s.path}: ${name}`);
+                const body = [snippet.body].flat().join('\n');
+                // Tab stops $1..$n without gaps, and a final $0.
+                const stops = [...new Set([...body.matchAll(/\$\{?(\d+)/g)].map((m) => Number(m[1])))].sort((a, b) => a - b);
+                assert.deepEqual(stops, stops.map((_, i) => i), `${s.path}: ${name}: tab stops ${stops}`);
+                (prefixes[s.language] ??= []).push(...[snippet.prefix].flat());
+            }
+        }
+        assert.ok(prefixes.bt.includes('tree'));
+        for (const p of ['varpoint', 'rule', 'observation']) assert.ok(prefixes.miron.includes(p), `miron: ${p}`);
+        assert.ok(prefixes.roqme.includes('observation'));
+    });
+    test('semantic highlighting on in the three languages', () => {
+        for (const l of ['bt', 'roqme', 'miron']) {
+            assert.equal(c.configurationDefaults[`[${l}]`]['editor.semanticHighlighting.enabled'], true, l);
         }
     });
     test('vsce essentials: publisher, engine, main, license, pinned vsce', () => {
@@ -60,6 +106,30 @@ describe('package.json', () => {
             assert.equal(readFileSync(join(extensionRoot, 'syntaxes', file), 'utf8'), render(grammar),
                 `${file} is out of date: run node syntaxes/generate.mjs`);
         }
+    });
+});
+
+describe('behaviour trees by content (out/detect.js)', () => {
+    const { isBehaviorTreeXml, mayBeBehaviorTree } = require('../out/detect.js');
+    test('<root> with <BehaviorTree> is a BT, in both versions and from Groot', () => {
+        const tree = readFileSync(join(extensionRoot, '..', '..', 'examples', 'intralogistics', 'intralogistics.bt'), 'utf8');
+        assert.ok(isBehaviorTreeXml(tree));
+        assert.ok(isBehaviorTreeXml('<?xml version="1.0"?>\n<root BTCPP_format="4">\n<BehaviorTree ID="A"><AlwaysSuccess/></BehaviorTree></root>'));
+        assert.ok(isBehaviorTreeXml('<root main_tree_to_execute="A"><TreeNodesModel/><BehaviorTree\n ID="A"/></root>'));
+    });
+    test('other XML is not', () => {
+        assert.ok(!isBehaviorTreeXml('<?xml version="1.0"?><project><modelVersion>4.0.0</modelVersion></project>'));
+        assert.ok(!isBehaviorTreeXml('<root><item/></root>'), 'a <root> alone');
+        assert.ok(!isBehaviorTreeXml('<rootfs><BehaviorTreeX/></rootfs>'), 'longer names');
+        assert.ok(!isBehaviorTreeXml('<config><!-- <root><BehaviorTree ID="x"/></root> --></config>'), 'in a comment');
+        assert.ok(!isBehaviorTreeXml(''));
+    });
+    test('only .xml files of the XML language are looked at', () => {
+        assert.ok(mayBeBehaviorTree('xml', '/w/trees/main.xml'));
+        assert.ok(mayBeBehaviorTree('xml', '/w/trees/MAIN.XML'));
+        assert.ok(!mayBeBehaviorTree('bt', '/w/trees/main.xml'));
+        assert.ok(!mayBeBehaviorTree('xml', '/w/pom.xsd'));
+        assert.ok(!mayBeBehaviorTree('plaintext', '/w/a.xml'));
     });
 });
 
@@ -84,11 +154,11 @@ describe('launch helpers (out/launch.js)', () => {
     test('the answer of miron.generate becomes a message', () => {
         // miron lsp's answer (docs/lsp.md): the server shows the message itself.
         assert.deepEqual(describeResult({ ok: true, message: 'Generated 4 files into /w/generated: a.ext.xml', written: ['/w/generated/a.ext.xml'], errors: [] }),
-            { message: 'Generated 4 files into /w/generated: a.ext.xml', ok: true, shownByServer: true, errors: [] });
+            { message: 'Generated 4 files into /w/generated: a.ext.xml', ok: true, shownByServer: true, errors: [], written: ['/w/generated/a.ext.xml'] });
         assert.deepEqual(describeResult({ ok: false, message: 'Not generated: a.miron has 1 error', written: [], errors: ['a.miron:1:2: x'] }),
-            { message: 'Not generated: a.miron has 1 error', ok: false, shownByServer: true, errors: ['a.miron:1:2: x'] });
+            { message: 'Not generated: a.miron has 1 error', ok: false, shownByServer: true, errors: ['a.miron:1:2: x'], written: [] });
         // Other answers are shown by the extension.
-        assert.deepEqual(describeResult('Wrote out/a.ext.xml'), { message: 'Wrote out/a.ext.xml', ok: true, shownByServer: false, errors: [] });
+        assert.deepEqual(describeResult('Wrote out/a.ext.xml'), { message: 'Wrote out/a.ext.xml', ok: true, shownByServer: false, errors: [], written: [] });
         assert.equal(describeResult('error: 2 problems').ok, false);
         assert.equal(describeResult({ written: ['/a/b.mzn', '/a/b.dzn'] }).message, 'MIRoN: Generate done. Wrote b.mzn, b.dzn.');
         assert.equal(describeResult({ errors: ['f:1:1: e'] }).message, 'MIRoN: Generate failed. f:1:1: e');

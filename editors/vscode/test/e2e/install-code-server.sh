@@ -17,8 +17,10 @@ for p in chromium ripgrep libkrb5-dev g++ make python3 pkg-config; do
 done
 if [ ${#need[@]} -gt 0 ]; then
     sudo=(); [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-    "${sudo[@]}" apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${need[@]}"
+    # Other apt users (CI steps, unattended upgrades) may hold the lock for a while: wait for it.
+    lock=(-o DPkg::Lock::Timeout=600)
+    "${sudo[@]}" apt-get "${lock[@]}" update -qq
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get "${lock[@]}" install -y -qq --no-install-recommends "${need[@]}"
 fi
 
 mkdir -p "$dir"
