@@ -8,6 +8,8 @@ import org.eclipse.lsp4j.CompletionItem;
 import org.eclipse.lsp4j.CompletionList;
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.DefinitionParams;
+import org.eclipse.lsp4j.DidChangeWorkspaceFoldersParams;
+import org.eclipse.lsp4j.DidOpenTextDocumentParams;
 import org.eclipse.lsp4j.DocumentHighlight;
 import org.eclipse.lsp4j.DocumentHighlightParams;
 import org.eclipse.lsp4j.ExecuteCommandCapabilities;
@@ -15,6 +17,7 @@ import org.eclipse.lsp4j.Hover;
 import org.eclipse.lsp4j.HoverParams;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
+import org.eclipse.lsp4j.InitializedParams;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.ReferenceParams;
 import org.eclipse.lsp4j.ServerCapabilities;
@@ -32,6 +35,8 @@ import org.eclipse.xtext.util.CancelIndicator;
  */
 public class MironLanguageServerImpl extends LanguageServerImpl {
     private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
+    private final WorkspaceFolderSet folders = new WorkspaceFolderSet();
+    private final FileChangeSource fileChanges = new FileChangeSource(this::didChangeWatchedFiles);
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
@@ -45,15 +50,46 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         if (workspace.getExecuteCommand() == null) {
             workspace.setExecuteCommand(new ExecuteCommandCapabilities(false));
         }
-        // Without a root Xtext reads workspace folders only if the client announced them, and fails in
-        // initialize otherwise: folders sent unannounced are used, and no folders at all work too.
-        if (params.getRootUri() == null && params.getRootPath() == null) {
-            if (params.getWorkspaceFolders() == null) {
-                params.setWorkspaceFolders(List.of());
-            }
-            workspace.setWorkspaceFolders(true);
-        }
+        // Only usable folders are indexed (a relative or odd root such as Neovim's "file://." made Xtext
+        // scan "/"), all passed as workspace folders: Xtext reads them only if the client announced
+        // them, so folders sent unannounced are used, and no folders at all work too.
+        params.setWorkspaceFolders(folders.initial(params));
+        params.setRootUri(null);
+        params.setRootPath(null);
+        workspace.setWorkspaceFolders(true);
+        fileChanges.clientCanWatch(workspace.getDidChangeWatchedFiles());
         return super.initialize(params);
+    }
+
+    @Override
+    public void initialized(InitializedParams params) {
+        super.initialized(params);
+        fileChanges.start(getLanguageClient(), folders.folders());
+    }
+
+    @Override
+    public CompletableFuture<Object> shutdown() {
+        fileChanges.close();
+        return super.shutdown();
+    }
+
+    // A document outside every folder (no workspace, or a refused root) brings its own folder in, so
+    // the files it imports are found; the folder is added before the document is opened (writes
+    // run in order).
+    @Override
+    public void didOpen(DidOpenTextDocumentParams params) {
+        folders.cover(params.getTextDocument().getUri()).ifPresent(this::changeFolders);
+        super.didOpen(params);
+    }
+
+    @Override
+    public void didChangeWorkspaceFolders(DidChangeWorkspaceFoldersParams params) {
+        changeFolders(folders.filter(params));
+    }
+
+    private void changeFolders(DidChangeWorkspaceFoldersParams change) {
+        super.didChangeWorkspaceFolders(change);
+        change.getEvent().getAdded().forEach(folder -> WorkspaceRoots.folder(folder.getUri()).ifPresent(fileChanges::watch));
     }
 
     // A position outside the document (a client racing an edit, or a buggy one) gets an empty

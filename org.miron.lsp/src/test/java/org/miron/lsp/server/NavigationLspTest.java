@@ -1,5 +1,6 @@
 package org.miron.lsp.server;
 
+import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
@@ -123,6 +124,35 @@ public class NavigationLspTest {
         List<String> names = symbols.stream().map(s -> s.isLeft() ? s.getLeft().getName() : s.getRight().getName())
                 .collect(Collectors.toList());
         assertTrue(names.toString(), names.containsAll(List.of("task", "maxVelocity", "noBattery")));
+        // Issue 23, item 11: kinds that fit, so outlines and breadcrumbs have icons.
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds = kinds(mironUri);
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Field, kinds.get("task"));
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Method, kinds.get("noBattery"));
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.EnumMember, kinds.get("dock"));
+        Path roqme = workspace.resolve("intralogistics.roqme");
+        String roqmeUri = client.open(roqme, Files.readString(roqme));
+        client.awaitDiagnostics(roqmeUri, d -> true);
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> roqmeKinds = kinds(roqmeUri);
+        assertEquals(roqmeKinds.toString(), org.eclipse.lsp4j.SymbolKind.Property, roqmeKinds.get("safety"));
+        assertTrue(roqmeKinds.toString(), roqmeKinds.containsValue(org.eclipse.lsp4j.SymbolKind.Event));
+        assertTrue(roqmeKinds.toString(), roqmeKinds.containsValue(org.eclipse.lsp4j.SymbolKind.Variable));
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btUri = client.open(bt, Files.readString(bt));
+        client.awaitDiagnostics(btUri, d -> true);
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> btKinds = kinds(btUri);
+        assertEquals(btKinds.toString(), org.eclipse.lsp4j.SymbolKind.Class, btKinds.get("Charge"));
+    }
+
+    /** The outline's symbols by their last name segment (the first of a name wins). */
+    private static java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds(String uri) throws Exception {
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds = new java.util.LinkedHashMap<>();
+        for (Either<SymbolInformation, DocumentSymbol> symbol : client.server().getTextDocumentService()
+                .documentSymbol(new DocumentSymbolParams(new TextDocumentIdentifier(uri))).get(60, TimeUnit.SECONDS)) {
+            String name = symbol.isLeft() ? symbol.getLeft().getName() : symbol.getRight().getName();
+            kinds.putIfAbsent(name.substring(name.lastIndexOf('.') + 1),
+                    symbol.isLeft() ? symbol.getLeft().getKind() : symbol.getRight().getKind());
+        }
+        return kinds;
     }
 
     @Test
@@ -132,6 +162,39 @@ public class NavigationLspTest {
         client.awaitDiagnostics(btUri, d -> true);
         assertNotNull(client.server().getTextDocumentService()
                 .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(btUri))).get(60, TimeUnit.SECONDS));
+    }
+
+    private static List<? extends org.eclipse.lsp4j.DocumentHighlight> highlights(String uri, org.eclipse.lsp4j.Position at)
+            throws Exception {
+        return client.server().getTextDocumentService().documentHighlight(new org.eclipse.lsp4j.DocumentHighlightParams(
+                new TextDocumentIdentifier(uri), at)).get(60, TimeUnit.SECONDS);
+    }
+
+    /** Issue 23, item 3: highlights only for the symbol under the cursor, none on keywords. */
+    @Test
+    public void documentHighlightsOnlyTheSymbolUnderTheCursor() throws Exception {
+        assertTrue(highlights(mironUri, new org.eclipse.lsp4j.Position(0, 0)).isEmpty());
+        assertTrue(highlights(mironUri, IntralogisticsLspTest.positionAfter(mironText, "@varpo")).isEmpty());
+        // A varpoint: its name and its uses in the rules, each a word on one line.
+        List<? extends org.eclipse.lsp4j.DocumentHighlight> task = highlights(mironUri,
+                IntralogisticsLspTest.positionAfter(mironText, "@varpoint ta"));
+        assertTrue(task.toString(), task.size() >= 3);
+        for (org.eclipse.lsp4j.DocumentHighlight highlight : task) {
+            org.eclipse.lsp4j.Range range = highlight.getRange();
+            assertTrue(task.toString(), range.getStart().getLine() == range.getEnd().getLine()
+                    && range.getEnd().getCharacter() - range.getStart().getCharacter() == "task".length());
+        }
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btText = Files.readString(bt);
+        String btUri = client.open(bt, btText);
+        client.awaitDiagnostics(btUri, d -> true);
+        assertTrue(highlights(btUri, new org.eclipse.lsp4j.Position(0, 0)).isEmpty());
+        assertTrue(highlights(btUri, IntralogisticsLspTest.positionAfter(btText, "<BehaviorTr")).isEmpty());
+        List<? extends org.eclipse.lsp4j.DocumentHighlight> charge = highlights(btUri,
+                IntralogisticsLspTest.positionAfter(btText, "<BehaviorTree ID=\"Cha"));
+        assertTrue(charge.toString(), charge.size() >= 2);
+        charge.forEach(h -> assertTrue(charge.toString(), h.getRange().getStart().getLine() == h.getRange().getEnd().getLine()
+                && h.getRange().getEnd().getCharacter() - h.getRange().getStart().getCharacter() <= "\"Charge\"".length()));
     }
 
     @Test
