@@ -20,12 +20,17 @@ import org.eclipse.lsp4j.InitializeResult;
 import org.eclipse.lsp4j.InitializedParams;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.ReferenceParams;
+import org.eclipse.lsp4j.RenameParams;
+import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.ServerCapabilities;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
+import org.eclipse.xtext.ide.server.UriExtensions;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.eclipse.xtext.util.CancelIndicator;
+
+import com.google.inject.Inject;
 
 /**
  * Xtext's language server, also for clients that open single files without any workspace folder
@@ -140,6 +145,16 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         } catch (IndexOutOfBoundsException outside) {
             return List.of();
         }
+    }
+
+    @Inject
+    private UriExtensions uris;
+
+    // Issue 23, item 12: no edit that writes what is already there.
+    @Override
+    protected WorkspaceEdit rename(RenameParams params, CancelIndicator cancelIndicator) {
+        return NoOpEdits.drop(super.rename(params, cancelIndicator),
+                uri -> getWorkspaceManager().doRead(uris.toUri(uri), (document, resource) -> document));
     }
 
     // Completion also starts where the three languages want it: '<' and '"' in BT, '::' in MIRoN.

@@ -81,6 +81,24 @@ public class IntralogisticsLspTest {
         client.awaitDiagnostics(mironUri, d -> !hasErrors(d));
     }
 
+    /**
+     * Issue 23, item 9: a renamed tree whose old name is still a node's name (the example's
+     * `<Sequence name="Charge">`): the message says no tree has the ID and names the trees.
+     */
+    @Test
+    public void aTreeRenamedAwayIsReportedAsNoSuchTree() throws Exception {
+        String mironUri = client.open(miron);
+        client.awaitDiagnostics(mironUri, d -> !hasErrors(d));
+        String btText = Files.readString(bt);
+        String btUri = client.open(bt, btText);
+        client.change(btUri, btText.replace("<BehaviorTree ID=\"Charge\">", "<BehaviorTree ID=\"Dock\">"));
+        List<Diagnostic> broken = client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
+        String messages = broken.stream().map(LspClient::message).collect(java.util.stream.Collectors.joining("\n"));
+        assertTrue(messages, messages.contains("unknown behavior tree 'main.Charge': no BehaviorTree has this ID"));
+        assertTrue(messages, messages.contains("main.Dock"));
+        assertFalse(messages, messages.contains("not a behavior tree"));
+    }
+
     @Test
     public void editingTheImportedTreeBufferRevalidatesTheMiron() throws Exception {
         String mironUri = client.open(miron);

@@ -114,7 +114,38 @@ public class NavigationLspTest {
         assertTrue(renamedTree.contains("<SubTreePlus ID=\"Dock\" name=\"charge_step\"/>"));
         String renamedModel = TextEdits.apply(text, edit.getChanges().get(uri));
         assertTrue(renamedModel.contains("dock : main.Dock,"));
+        // Issue 23, item 12: every edit changes something.
+        java.util.Map<String, String> texts = java.util.Map.of(uri, text, LspClient.uri(bt), Files.readString(bt));
+        edit.getChanges().forEach((file, edits) -> edits.forEach(e -> {
+            String original = texts.get(file);
+            if (original != null) {
+                String replaced = original.substring(TextEdits.offset(original, e.getRange().getStart()),
+                        TextEdits.offset(original, e.getRange().getEnd()));
+                assertFalse(file + ": a no-op edit " + e, replaced.equals(e.getNewText()));
+            }
+        }));
         // The edits are not applied: the shared workspace stays as it was for the other tests.
+    }
+
+    /** Issue 23, item 12: renaming the tree GoTo in the .bt renames its uses and adds no edit that changes nothing. */
+    @Test
+    public void renameATreeInTheBtHasNoNoOpEdits() throws Exception {
+        Path bt = workspace.resolve("intralogistics.bt");
+        String text = Files.readString(bt);
+        String uri = client.open(bt, text);
+        client.awaitDiagnostics(uri, d -> true);
+        WorkspaceEdit edit = client.server().getTextDocumentService().rename(new RenameParams(
+                new TextDocumentIdentifier(uri), IntralogisticsLspTest.positionAfter(text, "<BehaviorTree ID=\"Go"), "Drive"))
+                .get(60, TimeUnit.SECONDS);
+        List<org.eclipse.lsp4j.TextEdit> edits = edit.getChanges().get(uri);
+        for (org.eclipse.lsp4j.TextEdit e : edits) {
+            String replaced = text.substring(TextEdits.offset(text, e.getRange().getStart()),
+                    TextEdits.offset(text, e.getRange().getEnd()));
+            assertFalse("a no-op edit " + e, replaced.equals(e.getNewText()));
+        }
+        String renamed = TextEdits.apply(text, edits);
+        assertTrue(renamed, renamed.contains("<BehaviorTree ID=\"Drive\">"));
+        assertFalse(renamed, renamed.contains("<SubTreePlus ID=\"GoTo\""));
     }
 
     @Test
