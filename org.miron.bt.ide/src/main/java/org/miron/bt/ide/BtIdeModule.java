@@ -80,6 +80,10 @@ public class BtIdeModule extends AbstractBtIdeModule {
                 .to(org.miron.bt.ide.server.MironSymbolKinds.class);
     }
 
+    public Class<? extends org.eclipse.xtext.ide.editor.syntaxcoloring.ISemanticHighlightingCalculator> bindISemanticHighlightingCalculator() {
+        return org.miron.bt.ide.server.MironSemanticHighlighter.class;
+    }
+
     public Class<? extends IDocumentHighlightService> bindIDocumentHighlightService() {
         return SymbolOnlyHighlightService.class;
     }

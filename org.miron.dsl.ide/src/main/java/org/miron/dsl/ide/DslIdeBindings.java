@@ -61,6 +61,14 @@ public class DslIdeBindings extends AbstractGenericModule {
                 .to(org.miron.bt.ide.server.MironSymbolKinds.class);
     }
 
+    public Class<? extends org.eclipse.xtext.ide.editor.syntaxcoloring.ISemanticHighlightingCalculator> bindISemanticHighlightingCalculator() {
+        return org.miron.bt.ide.server.MironSemanticHighlighter.class;
+    }
+
+    public Class<? extends org.eclipse.xtext.ide.server.hover.IHoverService> bindIHoverService() {
+        return org.miron.dsl.ide.hover.DslHoverService.class;
+    }
+
     public Class<? extends IDocumentHighlightService> bindIDocumentHighlightService() {
         return SymbolOnlyHighlightService.class;
     }

@@ -1,6 +1,7 @@
 package org.miron.lsp.server;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.function.Consumer;
@@ -8,6 +9,7 @@ import java.util.function.Consumer;
 import org.eclipse.lsp4j.DidChangeWatchedFilesCapabilities;
 import org.eclipse.lsp4j.DidChangeWatchedFilesParams;
 import org.eclipse.lsp4j.DidChangeWatchedFilesRegistrationOptions;
+import org.eclipse.lsp4j.FileEvent;
 import org.eclipse.lsp4j.FileSystemWatcher;
 import org.eclipse.lsp4j.Registration;
 import org.eclipse.lsp4j.RegistrationParams;
@@ -18,7 +20,7 @@ import org.eclipse.lsp4j.services.LanguageClient;
  * Where the server learns of changes on disk: a client that can watch files is asked to
  * (client/registerCapability of workspace/didChangeWatchedFiles for the model files); with any
  * other client, or if the registration fails, the server watches its folders itself
- * ({@link WorkspaceWatcher}).
+ * ({@link WorkspaceWatcher}), from initialize on.
  */
 final class FileChangeSource implements AutoCloseable {
     static final String GLOB = "**/*.{bt,roqme,miron,xml}";
@@ -27,19 +29,29 @@ final class FileChangeSource implements AutoCloseable {
     private boolean clientCanWatch;
     private WorkspaceWatcher watcher;
     private boolean closed;
+    /** Changes seen before the workspace's first build is under way; null once they are passed on. */
+    private List<FileEvent> early = new ArrayList<>();
 
     FileChangeSource(Consumer<DidChangeWatchedFilesParams> server) {
         this.server = server;
     }
 
-    void clientCanWatch(DidChangeWatchedFilesCapabilities capabilities) {
+    /**
+     * In initialize: whether the client will watch; if not, the server's watch starts now, before
+     * the workspace is built, so that nothing changed on disk during the first build goes unseen
+     * (its events wait for {@link #start}).
+     */
+    void initialize(DidChangeWatchedFilesCapabilities capabilities, List<Path> folders) {
         clientCanWatch = capabilities != null && Boolean.TRUE.equals(capabilities.getDynamicRegistration());
-    }
-
-    /** After initialized: the client's watch if it offers one, else the server's own on the folders. */
-    void start(LanguageClient client, List<Path> folders) {
         if (!clientCanWatch) {
             watchAll(folders);
+        }
+    }
+
+    /** After initialized: the client is asked to watch if it can; the server's early events are passed on. */
+    void start(LanguageClient client, List<Path> folders) {
+        if (!clientCanWatch) {
+            passOn();
             return;
         }
         FileSystemWatcher models = new FileSystemWatcher(Either.forLeft(GLOB));
@@ -50,6 +62,7 @@ final class FileChangeSource implements AutoCloseable {
                 System.err.println("miron lsp: the client refused to watch files (" + failed.getMessage()
                         + "); the server watches the workspace itself");
                 watchAll(folders);
+                passOn();
             }
         });
     }
@@ -66,11 +79,32 @@ final class FileChangeSource implements AutoCloseable {
             return;
         }
         try {
-            watcher = new WorkspaceWatcher(events -> server.accept(new DidChangeWatchedFilesParams(events)));
+            watcher = new WorkspaceWatcher(this::changed);
             folders.forEach(watcher::watch);
         } catch (IOException e) {
             System.err.println("miron lsp: cannot watch the workspace (" + e.getMessage()
                     + "): changes on disk are seen only if the editor reports them");
+        }
+    }
+
+    private void changed(List<FileEvent> events) {
+        synchronized (this) {
+            if (early != null) {
+                early.addAll(events);
+                return;
+            }
+        }
+        server.accept(new DidChangeWatchedFilesParams(events));
+    }
+
+    private void passOn() {
+        List<FileEvent> events;
+        synchronized (this) {
+            events = early;
+            early = null;
+        }
+        if (events != null && !events.isEmpty()) {
+            server.accept(new DidChangeWatchedFilesParams(events));
         }
     }
 

@@ -62,7 +62,7 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         params.setRootUri(null);
         params.setRootPath(null);
         workspace.setWorkspaceFolders(true);
-        fileChanges.clientCanWatch(workspace.getDidChangeWatchedFiles());
+        fileChanges.initialize(workspace.getDidChangeWatchedFiles(), folders.folders());
         return super.initialize(params);
     }
 

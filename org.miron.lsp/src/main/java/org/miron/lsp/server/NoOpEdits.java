@@ -39,7 +39,9 @@ final class NoOpEdits {
             edit.getDocumentChanges().forEach(change -> {
                 if (change.isLeft()) {
                     Document document = documents.apply(change.getLeft().getTextDocument().getUri());
-                    change.getLeft().setEdits(change.getLeft().getEdits().stream().filter(changes(document)).toList());
+                    Predicate<TextEdit> changes = changes(document);
+                    change.getLeft().setEdits(change.getLeft().getEdits().stream()
+                            .filter(e -> e.isRight() || changes.test(e.getLeft())).toList());
                 }
             });
             edit.getDocumentChanges().removeIf(change -> change.isLeft() && change.getLeft().getEdits().isEmpty());

@@ -39,12 +39,13 @@ public class NavigationLspTest {
     private static LspClient client;
     private static String mironText;
     private static String mironUri;
+    private static org.eclipse.lsp4j.SemanticTokensLegend legend;
 
     @BeforeClass
     public static void setUp() throws Exception {
         workspace = Examples.copy("intralogistics");
         client = new LspClient();
-        client.initialize(workspace);
+        legend = client.initialize(workspace).getCapabilities().getSemanticTokensProvider().getLegend();
         mironText = Files.readString(workspace.resolve("intralogistics.miron")) + "\nrule r2 : roqme.safety < 0.3 implies task = task::dock\n";
         mironUri = client.open(workspace.resolve("intralogistics.miron"), mironText);
         client.awaitDiagnostics(mironUri, d -> true);
@@ -186,46 +187,70 @@ public class NavigationLspTest {
         return kinds;
     }
 
-    @Test
-    public void semanticTokensOfABehaviourTreeWithTreeNodesModel() throws Exception {
-        Path bt = workspace.resolve("intralogistics.bt");
-        String btUri = client.open(bt, Files.readString(bt));
-        client.awaitDiagnostics(btUri, d -> true);
-        assertNotNull(client.server().getTextDocumentService()
-                .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(btUri))).get(60, TimeUnit.SECONDS));
-    }
-
-    private static List<? extends org.eclipse.lsp4j.DocumentHighlight> highlights(String uri, org.eclipse.lsp4j.Position at)
-            throws Exception {
-        return client.server().getTextDocumentService().documentHighlight(new org.eclipse.lsp4j.DocumentHighlightParams(
-                new TextDocumentIdentifier(uri), at)).get(60, TimeUnit.SECONDS);
-    }
-
-    /** Issue 23, item 3: highlights only for the symbol under the cursor, none on keywords. */
-    @Test
-    public void documentHighlightsOnlyTheSymbolUnderTheCursor() throws Exception {
-        assertTrue(highlights(mironUri, new org.eclipse.lsp4j.Position(0, 0)).isEmpty());
-        assertTrue(highlights(mironUri, IntralogisticsLspTest.positionAfter(mironText, "@varpo")).isEmpty());
-        // A varpoint: its name and its uses in the rules, each a word on one line.
-        List<? extends org.eclipse.lsp4j.DocumentHighlight> task = highlights(mironUri,
-                IntralogisticsLspTest.positionAfter(mironText, "@varpoint ta"));
-        assertTrue(task.toString(), task.size() >= 3);
-        for (org.eclipse.lsp4j.DocumentHighlight highlight : task) {
-            org.eclipse.lsp4j.Range range = highlight.getRange();
-            assertTrue(task.toString(), range.getStart().getLine() == range.getEnd().getLine()
-                    && range.getEnd().getCharacter() - range.getStart().getCharacter() == "task".length());
+    /** The semantic tokens of a file: "line:column text" → "type[ modifier...]". */
+    private static java.util.Map<String, String> tokens(String uri, String text) throws Exception {
+        List<Integer> data = client.server().getTextDocumentService()
+                .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(uri))).get(60, TimeUnit.SECONDS).getData();
+        java.util.Map<String, String> tokens = new java.util.LinkedHashMap<>();
+        String[] lines = text.split("\n", -1);
+        int line = 0;
+        int column = 0;
+        for (int i = 0; i + 4 < data.size() + 1; i += 5) {
+            line += data.get(i);
+            column = data.get(i) == 0 ? column + data.get(i + 1) : data.get(i + 1);
+            String word = lines[line].substring(column, column + data.get(i + 2));
+            StringBuilder kind = new StringBuilder(legend.getTokenTypes().get(data.get(i + 3)));
+            for (int bit = 0; bit < legend.getTokenModifiers().size(); bit++) {
+                if ((data.get(i + 4) & (1 << bit)) != 0) {
+                    kind.append(' ').append(legend.getTokenModifiers().get(bit));
+                }
+            }
+            tokens.put((line + 1) + ":" + word, kind.toString());
         }
+        return tokens;
+    }
+
+    /** The type of the first token with this text on the first line that contains the context. */
+    private static String tokenType(java.util.Map<String, String> tokens, String text, String context, String word) {
+        String[] lines = text.split("\n", -1);
+        for (int i = 0; i < lines.length; i++) {
+            if (lines[i].contains(context)) {
+                return tokens.get((i + 1) + ":" + word);
+            }
+        }
+        throw new AssertionError("no line with " + context);
+    }
+
+    /** Issue 23, item 15 (the server's half): names coloured by what they denote, BT elements by kind. */
+    @Test
+    public void semanticTokensSayWhatNamesDenote() throws Exception {
+        // Other tests of the class open the file as it is on disk: this one needs the extra rule back.
+        client.open(workspace.resolve("intralogistics.miron"), mironText);
+        client.awaitDiagnostics(mironUri, d -> true);
+        java.util.Map<String, String> miron = tokens(mironUri, mironText);
+        assertEquals(miron.toString(), "namespace", tokenType(miron, mironText, "dock : main.Charge", "main"));
+        assertEquals(miron.toString(), "class", tokenType(miron, mironText, "dock : main.Charge", "Charge"));
+        assertEquals(miron.toString(), "property", tokenType(miron, mironText, "rule r2 : roqme.safety", "safety"));
+        assertEquals(miron.toString(), "property", tokenType(miron, mironText, "10 affects roqme.safety", "safety"));
+        assertEquals(miron.toString(), "enumMember", tokenType(miron, mironText, "implies task = task::dock", "dock"));
+        assertEquals(miron.toString(), "variable declaration", tokenType(miron, mironText, "@varpoint task", "task"));
+        assertEquals(miron.toString(), "class", tokenType(miron, mironText, "} in main.PickDeliverChargeSubtree",
+                "PickDeliverChargeSubtree"));
+
         Path bt = workspace.resolve("intralogistics.bt");
         String btText = Files.readString(bt);
         String btUri = client.open(bt, btText);
         client.awaitDiagnostics(btUri, d -> true);
-        assertTrue(highlights(btUri, new org.eclipse.lsp4j.Position(0, 0)).isEmpty());
-        assertTrue(highlights(btUri, IntralogisticsLspTest.positionAfter(btText, "<BehaviorTr")).isEmpty());
-        List<? extends org.eclipse.lsp4j.DocumentHighlight> charge = highlights(btUri,
-                IntralogisticsLspTest.positionAfter(btText, "<BehaviorTree ID=\"Cha"));
-        assertTrue(charge.toString(), charge.size() >= 2);
-        charge.forEach(h -> assertTrue(charge.toString(), h.getRange().getStart().getLine() == h.getRange().getEnd().getLine()
-                && h.getRange().getEnd().getCharacter() - h.getRange().getStart().getCharacter() <= "\"Charge\"".length()));
+        java.util.Map<String, String> tree = tokens(btUri, btText);
+        assertEquals(tree.toString(), "class declaration", tokenType(tree, btText, "<BehaviorTree ID=\"Charge\"", "Charge"));
+        assertEquals(tree.toString(), "class", tokenType(tree, btText, "<SubTreePlus ID=\"GoTo\"", "GoTo"));
+        assertEquals(tree.toString(), "keyword", tokenType(tree, btText, "<Sequence name=\"Charge\"", "Sequence"));
+        assertEquals(tree.toString(), "keyword", tokenType(tree, btText, "</Sequence>", "Sequence"));
+        assertEquals(tree.toString(), "function", tokenType(tree, btText, "<Action ID=\"objectdrop\"", "Action"));
+        assertEquals(tree.toString(), "class", tokenType(tree, btText, "<SubTreePlus ID=\"GoTo\"", "SubTreePlus"));
+        assertEquals(tree.toString(), "decorator", tokenType(tree, btText, "<RetryUntilSuccessful", "RetryUntilSuccessful"));
+        java.util.Set<String> kinds = new java.util.HashSet<>(tree.values());
+        assertTrue(kinds.toString(), kinds.containsAll(List.of("keyword", "function", "class", "property")));
     }
 
     @Test

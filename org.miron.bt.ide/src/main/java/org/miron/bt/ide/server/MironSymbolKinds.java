@@ -48,15 +48,15 @@ public class MironSymbolKinds extends DocumentSymbolKindProvider {
 
     @Override
     protected SymbolKind getSymbolKind(EClass type) {
-        SymbolKind kind = KINDS.get(key(type));
-        if (kind != null) {
-            return kind;
-        }
-        for (EClass superType : type.getEAllSuperTypes()) {
-            kind = KINDS.get(key(superType));
+        // Nearest first: a SubTreePlus is a SubtreeNode before it is a TreeNode.
+        java.util.ArrayDeque<EClass> queue = new java.util.ArrayDeque<>(java.util.List.of(type));
+        while (!queue.isEmpty()) {
+            EClass next = queue.removeFirst();
+            SymbolKind kind = KINDS.get(key(next));
             if (kind != null) {
                 return kind;
             }
+            queue.addAll(next.getESuperTypes());
         }
         return super.getSymbolKind(type);
     }
