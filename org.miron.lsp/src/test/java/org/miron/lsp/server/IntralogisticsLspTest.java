@@ -198,6 +198,29 @@ public class IntralogisticsLspTest {
         assertTrue(edits.toString(), TextEdits.apply(text, edits).contains("rule noBattery : roqme.power_autonomy < 0.3"));
     }
 
+    private String formatted(Path file, FormattingOptions options) throws Exception {
+        String text = Files.readString(file);
+        String uri = client.open(file, text);
+        client.awaitDiagnostics(uri, d -> true);
+        return TextEdits.apply(text, client.server().getTextDocumentService()
+                .formatting(new DocumentFormattingParams(new TextDocumentIdentifier(uri), options)).get(60, TimeUnit.SECONDS));
+    }
+
+    /**
+     * Issue 23, item 10: the examples are formatter-clean through the server too, and the client's
+     * indentation (tabSize, insertSpaces) is the one used.
+     */
+    @Test
+    public void formattingKeepsTheExamplesAndUsesTheClientsIndentation() throws Exception {
+        for (Path file : List.of(miron, roqme, bt)) {
+            assertEquals(file.toString(), Files.readString(file), formatted(file, new FormattingOptions(2, true)));
+        }
+        assertTrue(formatted(miron, new FormattingOptions(4, true)).contains("\n    10 affects roqme.safety++,\n"));
+        assertTrue(formatted(miron, new FormattingOptions(4, false)).contains("\n\t10 affects roqme.safety++,\n"));
+        assertTrue(formatted(bt, new FormattingOptions(4, true)).contains("\n    <BehaviorTree ID=\"Main\">\n"));
+        assertTrue(formatted(bt, new FormattingOptions(3, false)).contains("\n\t<BehaviorTree ID=\"Main\">\n"));
+    }
+
     static List<String> labels(Either<List<CompletionItem>, CompletionList> result) {
         List<CompletionItem> items = result.isLeft() ? result.getLeft() : result.getRight().getItems();
         return items.stream().map(CompletionItem::getLabel).collect(Collectors.toList());
