@@ -44,7 +44,13 @@ public class BtSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
                 return null;
             }
             String expected = mismatch.group(2);
-            return new SyntaxErrorMessage("</" + mismatch.group(1) + "> does not close <" + expected + ">: write </"
+            String found = mismatch.group(1);
+            if (openAbove(tokens, i, expected, found)) {
+                // </BehaviorTree> after an unclosed <Sequence>: the Sequence's close tag is missing.
+                return new SyntaxErrorMessage("<" + expected + "> is not closed: write </" + expected + "> before </"
+                        + found + ">", BtIssueCodes.SYNTAX_ERROR, null);
+            }
+            return new SyntaxErrorMessage("</" + found + "> does not close <" + expected + ">: write </"
                     + expected + ">", BtIssueCodes.CLOSE_TAG_MISMATCH, new String[] { expected });
         }
         return null;
@@ -64,5 +70,32 @@ public class BtSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
             return message;
         }
         return new SyntaxErrorMessage(message.getMessage(), BtIssueCodes.SYNTAX_ERROR, message.getIssueData());
+    }
+
+    /**
+     * Whether the element the wrong close tag names is open around the one it should close: the
+     * elements still open before the tokens' index, innermost last, hold it below the expected one.
+     */
+    private static boolean openAbove(TokenStream tokens, int end, String expected, String found) {
+        java.util.Deque<String> open = new java.util.ArrayDeque<>();
+        String previous = null;
+        for (int i = 0; i < end; i++) {
+            Token token = tokens.get(i);
+            if (token.getChannel() != Token.DEFAULT_CHANNEL) {
+                continue;
+            }
+            String text = token.getText();
+            if ("<".equals(previous)) {
+                open.push(text);
+            } else if ("</".equals(previous) && open.contains(text)) {
+                while (!open.isEmpty() && !open.pop().equals(text)) {
+                    // elements left open inside it end with it
+                }
+            } else if ("/>".equals(text) && !open.isEmpty()) {
+                open.pop();
+            }
+            previous = text;
+        }
+        return !open.isEmpty() && open.peek().equals(expected) && open.stream().skip(1).anyMatch(found::equals);
     }
 }
