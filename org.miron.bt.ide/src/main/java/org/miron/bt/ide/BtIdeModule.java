@@ -11,12 +11,14 @@ import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
 import org.eclipse.xtext.ide.server.rename.IRenameService2;
 import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
+import org.eclipse.xtext.ide.server.occurrences.IDocumentHighlightService;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
 import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
 import org.miron.bt.ide.server.PlainErrorRenameService;
 import org.miron.bt.ide.server.ResolvedOnlySymbolService;
+import org.miron.bt.ide.server.SymbolOnlyHighlightService;
 import org.miron.bt.ide.server.SyntaxSafeFormattingService;
 import org.miron.bt.ide.hover.BtDocumentationProvider;
 import org.miron.bt.ide.hover.BtHoverService;
@@ -70,5 +72,19 @@ public class BtIdeModule extends AbstractBtIdeModule {
 
     public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
         return NamelessSafeOffsetHelper.class;
+    }
+
+    // A nested class: Xtext's bind-method naming cannot name it.
+    public void configureSymbolKinds(com.google.inject.Binder binder) {
+        binder.bind(org.eclipse.xtext.ide.server.symbol.DocumentSymbolMapper.DocumentSymbolKindProvider.class)
+                .to(org.miron.bt.ide.server.MironSymbolKinds.class);
+    }
+
+    public Class<? extends org.eclipse.xtext.ide.editor.syntaxcoloring.ISemanticHighlightingCalculator> bindISemanticHighlightingCalculator() {
+        return org.miron.bt.ide.server.MironSemanticHighlighter.class;
+    }
+
+    public Class<? extends IDocumentHighlightService> bindIDocumentHighlightService() {
+        return SymbolOnlyHighlightService.class;
     }
 }

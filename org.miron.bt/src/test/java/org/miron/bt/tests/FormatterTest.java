@@ -23,6 +23,21 @@ import org.miron.bt.formatting2.BtFormatting;
  */
 public class FormatterTest {
 
+    /** Issue 23, item 10: the shipped trees are what the formatter makes of them. */
+    @Test
+    public void theExampleTreesAreFormatterClean() throws Exception {
+        File[] examples = new File("..", "examples").listFiles(File::isDirectory);
+        int checked = 0;
+        for (File example : examples) {
+            for (File tree : example.listFiles((dir, name) -> name.endsWith(".bt"))) {
+                String text = java.nio.file.Files.readString(tree.toPath());
+                assertEquals(tree.toString(), text, BtFormatting.format(BtFiles.parse(text, tree)));
+                checked++;
+            }
+        }
+        assertEquals(true, checked >= 2);
+    }
+
     @Test
     public void messyFileBecomesTidy() throws Exception {
         String messy = "<?xml version=\"1.0\"?>\n"

@@ -140,6 +140,23 @@ public class IssueCodesTest {
         assertArrayEquals(new String[] { "RateController" }, issue.getData());
     }
 
+    /** Issue 23, item 8: a built-in closed by another name, and one left unclosed, said as such. */
+    @Test
+    public void closeTagsOfBuiltins() throws Exception {
+        String mismatched = "<root>\n  <BehaviorTree ID=\"Main\">\n    <Sequence>\n      <AlwaysSuccess/>\n"
+                + "    </Fallback>\n  </BehaviorTree>\n</root>\n";
+        List<Issue> issues = BtFiles.validate(BtFiles.parse(mismatched, new File(INVALID, "mismatched.bt")));
+        Issue issue = issues.stream().filter(i -> BtIssueCodes.CLOSE_TAG_MISMATCH.equals(i.getCode())).findFirst()
+                .orElseThrow(() -> new AssertionError(BtFiles.describe(issues)));
+        assertEquals("</Fallback> does not close <Sequence>: write </Sequence>", issue.getMessage());
+        assertArrayEquals(new String[] { "Sequence" }, issue.getData());
+        String unclosed = "<root>\n  <BehaviorTree ID=\"Main\">\n    <Sequence>\n      <AlwaysSuccess/>\n"
+                + "  </BehaviorTree>\n</root>\n";
+        List<Issue> missing = BtFiles.validate(BtFiles.parse(unclosed, new File(INVALID, "unclosed.bt")));
+        assertEquals(BtFiles.describe(missing), true, missing.stream().anyMatch(
+                i -> i.getMessage().equals("<Sequence> is not closed: write </Sequence> before </BehaviorTree>")));
+    }
+
     @Test
     public void syntaxErrorsHaveTheLanguagesCode() throws Exception {
         String text = "<root>\n  <BehaviorTree ID=\"Main\"><Sequence></BehaviorTree>\n</root>\n";

@@ -8,11 +8,13 @@ import org.eclipse.xtext.ide.server.formatting.FormattingService;
 import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
 import org.eclipse.xtext.ide.server.rename.IRenameService2;
 import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
+import org.eclipse.xtext.ide.server.occurrences.IDocumentHighlightService;
 import org.eclipse.xtext.service.AbstractGenericModule;
 import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
 import org.miron.bt.ide.server.PlainErrorRenameService;
 import org.miron.bt.ide.server.ResolvedOnlySymbolService;
+import org.miron.bt.ide.server.SymbolOnlyHighlightService;
 import org.miron.bt.ide.server.SyntaxSafeFormattingService;
 import org.miron.dsl.ide.contentassist.DslCrossrefProposalProvider;
 import org.miron.dsl.ide.contentassist.DslProposalProvider;
@@ -51,5 +53,23 @@ public class DslIdeBindings extends AbstractGenericModule {
 
     public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
         return NamelessSafeOffsetHelper.class;
+    }
+
+    // A nested class: Xtext's bind-method naming cannot name it.
+    public void configureSymbolKinds(com.google.inject.Binder binder) {
+        binder.bind(org.eclipse.xtext.ide.server.symbol.DocumentSymbolMapper.DocumentSymbolKindProvider.class)
+                .to(org.miron.bt.ide.server.MironSymbolKinds.class);
+    }
+
+    public Class<? extends org.eclipse.xtext.ide.editor.syntaxcoloring.ISemanticHighlightingCalculator> bindISemanticHighlightingCalculator() {
+        return org.miron.bt.ide.server.MironSemanticHighlighter.class;
+    }
+
+    public Class<? extends org.eclipse.xtext.ide.server.hover.IHoverService> bindIHoverService() {
+        return org.miron.dsl.ide.hover.DslHoverService.class;
+    }
+
+    public Class<? extends IDocumentHighlightService> bindIDocumentHighlightService() {
+        return SymbolOnlyHighlightService.class;
     }
 }

@@ -13,6 +13,7 @@ import org.eclipse.xtext.formatting2.internal.WhitespaceReplacer;
 import org.eclipse.xtext.formatting2.regionaccess.IComment;
 import org.eclipse.xtext.formatting2.regionaccess.ISemanticRegion;
 import org.miron.dsl.miron.ArchBinding;
+import org.miron.dsl.miron.Binding;
 import org.miron.dsl.miron.BehaviorTreeEnumType;
 import org.miron.dsl.miron.ImpactOnQuality;
 import org.miron.dsl.miron.NumericSampledType;
@@ -34,6 +35,10 @@ import org.miron.dsl.roqme.UnaryExpression;
  * enum { A, B } and impact sets stay on one line. Comments are kept.
  */
 public class DslFormatter extends AbstractJavaFormatter {
+
+    /** Tokens with a spacing rule of their own, next to which a written line break is not kept. */
+    private static final Set<String> GLUED = Set.of("(", ")", "[", "]", ",", "'", "@", "!", "-", ":", "+", "++", "+++",
+            "--", "---");
 
     /** Elements whose { } block holds one item per line. */
     private static final Set<Class<?>> BLOCKS = Set.of(Observation.class, BehaviorTreeEnumType.class,
@@ -101,7 +106,10 @@ public class DslFormatter extends AbstractJavaFormatter {
     private void formatToken(ISemanticRegion region, IFormattableDocument doc) {
         String text = region.getText();
         EObject owner = region.getSemanticElement();
-        boolean block = BLOCKS.stream().anyMatch(c -> c.isInstance(owner));
+        // A block written on one line (`implies { a = x, b = y }`) stays on one line; an arch binding
+        // always has one item per line.
+        boolean block = BLOCKS.stream().anyMatch(c -> c.isInstance(owner))
+                && (owner instanceof ArchBinding || writtenOnLines(owner));
         if (text.startsWith("/**")) {
             doc.append(region, this::newLine);
         } else if (text.equals(",")) {
@@ -134,12 +142,70 @@ public class DslFormatter extends AbstractJavaFormatter {
         } else if (owner instanceof ArchBinding && text.startsWith("parameter") || owner instanceof ArchBinding
                 && text.equals("component")) {
             doc.prepend(region, this::newLine);
+        } else if (owner instanceof Binding && region.getPreviousSemanticRegion() != null
+                && region.getPreviousHiddenRegion().isMultiline() && isFirstOf(region, owner)) {
+            // `}` then `in arch {` on a line of its own (a blank line between kept), as written.
+            doc.prepend(region, f -> f.setNewLines(1, 1, 2));
+        } else if (owner instanceof Rule rule && text.equals("implies")) {
+            formatRule(rule, region, doc);
         }
         // one action per line in an observation block
-        if (owner instanceof Observation && text.equals("{")) {
+        if (owner instanceof Observation && text.equals("{") && block) {
             for (EObject action : ((Observation) owner).getActions()) {
                 doc.prepend(action, this::newLine);
             }
         }
+    }
+
+    /**
+     * A rule: {@code implies} on its own line, one level in; the line breaks written in the
+     * condition kept, two levels in (as the examples write a long condition).
+     */
+    private void formatRule(Rule rule, ISemanticRegion implies, IFormattableDocument doc) {
+        ISemanticRegion colon = regionFor(rule).keyword(":");
+        ISemanticRegion last = lastRegion(rule);
+        doc.prepend(implies, this::newLine);
+        if (colon == null || last == null) {
+            return;
+        }
+        doc.set(colon.getNextHiddenRegion(), last.getNextHiddenRegion(), this::indent);
+        ISemanticRegion lastOfCondition = implies.getPreviousSemanticRegion();
+        if (lastOfCondition != colon) {
+            doc.set(colon.getNextHiddenRegion(), implies.getPreviousHiddenRegion(), this::indent);
+            for (ISemanticRegion r = colon.getNextSemanticRegion(); r != null && r != lastOfCondition; r = r
+                    .getNextSemanticRegion()) {
+                // Only between tokens no other rule spaces (a break inside "( x" would conflict with it).
+                if (r.getNextHiddenRegion().isMultiline() && !GLUED.contains(r.getText())
+                        && !GLUED.contains(r.getNextSemanticRegion().getText())) {
+                    doc.append(r, this::newLine);
+                }
+            }
+        }
+    }
+
+    private ISemanticRegion lastRegion(EObject element) {
+        ISemanticRegion last = null;
+        for (ISemanticRegion region : allSemanticRegions(element)) {
+            last = region;
+        }
+        return last;
+    }
+
+    private boolean isFirstOf(ISemanticRegion region, EObject element) {
+        for (ISemanticRegion first : allSemanticRegions(element)) {
+            return first == region;
+        }
+        return false;
+    }
+
+    /** Whether an element's { } block was written over several lines. */
+    private boolean writtenOnLines(EObject owner) {
+        ISemanticRegion open = regionFor(owner).keyword("{");
+        ISemanticRegion close = regionFor(owner).keyword("}");
+        if (open == null || close == null) {
+            return true;
+        }
+        return getTextRegionAccess().textForOffset(open.getOffset(), close.getEndOffset() - open.getOffset())
+                .indexOf('\n') >= 0;
     }
 }

@@ -47,6 +47,12 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
         EClass type = context.getReference().getEReferenceType();
         String text = context.getLinkText();
         String kind = otherKind(context.getContext(), text);
+        if (kind != null && type == BtPackage.Literals.BEHAVIOR_TREE && kind.equals(describe(BtPackage.Literals.TREE_NODE))) {
+            // Trees and named nodes share the alias's names: after a tree is renamed its old name often
+            // denotes a node (<Sequence name="Charge">), which is no news to the user. Say which trees there are.
+            return new DiagnosticMessage("unknown behavior tree '" + text + "': no BehaviorTree has this ID"
+                    + trees(context), Severity.ERROR, RoqmeIssueCodes.UNKNOWN_REFERENCE, closest(context, "."));
+        }
         if (kind != null) {
             return new DiagnosticMessage("unknown " + describe(type) + " '" + text + "': it is " + article(kind)
                     + ", not " + article(describe(type)), Severity.ERROR, RoqmeIssueCodes.WRONG_KIND_REFERENCE);
@@ -71,6 +77,21 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
             names.add(String.join(delimiter, d.getName().getSegments()));
         }
         return Suggestions.closest(context.getLinkText(), names).toArray(new String[0]);
+    }
+
+    /** " (the trees are: a.X, a.Y)" for the trees a tree reference can name, or "" if there are none. */
+    private String trees(ILinkingDiagnosticContext context) {
+        List<String> names = new ArrayList<>();
+        for (IEObjectDescription d : scopeProvider.getScope(context.getContext(), context.getReference()).getAllElements()) {
+            if (d.getEClass() == BtPackage.Literals.BEHAVIOR_TREE) {
+                names.add(String.join(".", d.getName().getSegments()));
+            }
+        }
+        if (names.isEmpty()) {
+            return "";
+        }
+        List<String> shown = names.size() > 12 ? names.subList(0, 12) : names;
+        return " (the trees are: " + String.join(", ", shown) + (names.size() > shown.size() ? ", ..." : "") + ")";
     }
 
     /** What the name denotes when it exists, but as an element of another kind; null otherwise. */

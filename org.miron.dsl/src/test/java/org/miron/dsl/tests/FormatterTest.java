@@ -22,7 +22,7 @@ import org.miron.bt.formatting2.BtFormatting;
 
 /**
  * The formatter (what `miron format` runs for any language): formatting keeps the model, adds
- * no error, and formatting twice changes nothing more. Figure 3 gets a known layout.
+ * no error, and formatting twice changes nothing more; the examples are formatter-clean.
  */
 public class FormatterTest {
 
@@ -61,32 +61,46 @@ public class FormatterTest {
         return tokens.toString();
     }
 
+    /**
+     * Issue 23, item 10: every shipped example is formatter-clean (what an editor's "Format
+     * Document" leaves as it is): blocks written on one line, `implies` on its own line, a binding
+     * after a blank line, a long condition's line breaks, all kept.
+     */
     @Test
-    public void figure3() throws IOException {
-        String formatted = check(new File(Models.root(), "examples/intralogistics/intralogistics.miron"));
-        assertEquals(String.join("\n",
-                "import \"intralogistics.bt\" as main",
-                "import \"intralogistics.roqme\" as roqme",
-                "",
-                "@varpoint task : enum {",
-                "  pick : main.PickDeliverCharge,",
-                "  deliver : main.DeliverCharge,",
-                "  dock : main.Charge,",
-                "  pickDeliverCharge : preset",
-                "} in main.PickDeliverChargeSubtree",
-                "",
-                "@varpoint maxVelocity : number (10:1:100) {",
-                "  10 affects roqme.safety++,",
-                "  100 affects roqme.mission_completion++",
-                "} in arch {",
-                "  parameterSetRepository \"CommNavigationObjects\"",
-                "  parameterSet \"CdParameter\"",
-                "  component \"SmartCdServer\"",
-                "  parameter \"transvel\"",
-                "}",
-                "",
-                "rule noBattery : roqme.power_autonomy < 0.3 implies task = task::dock",
-                ""), formatted);
+    public void theExamplesAreFormatterClean() throws IOException {
+        List<String> changed = new ArrayList<>();
+        try (Stream<Path> paths = Files.walk(new File(Models.root(), "examples").toPath())) {
+            for (Path path : (Iterable<Path>) paths.filter(p -> p.toString().endsWith(".roqme")
+                    || p.toString().endsWith(".miron")).sorted()::iterator) {
+                String formatted = check(path.toFile());
+                if (!formatted.equals(Files.readString(path))) {
+                    changed.add(path + ":\n" + formatted);
+                }
+            }
+        }
+        assertEquals(String.join("\n\n", changed), List.of(), changed);
+    }
+
+    @Test
+    public void aOneLineRuleGetsImpliesOnItsOwnLine() throws IOException {
+        Path example = new File(Models.root(), "examples/intralogistics").toPath();
+        Path copy = Files.createTempDirectory("formatter");
+        try {
+            for (String name : List.of("intralogistics.miron", "intralogistics.roqme", "intralogistics.bt")) {
+                Files.copy(example.resolve(name), copy.resolve(name));
+            }
+            Path model = copy.resolve("intralogistics.miron");
+            Files.writeString(model, Files.readString(model).replace("< 0.3\n  implies", "< 0.3 implies")
+                    .replace("}\n\nin arch", "} in arch"));
+            String formatted = check(model.toFile());
+            assertEquals(formatted, true,
+                    formatted.contains("rule noBattery : roqme.power_autonomy < 0.3\n  implies task = task::dock\n"));
+            assertEquals(formatted, true, formatted.contains("} in arch {"));
+        } finally {
+            try (Stream<Path> files = Files.walk(copy)) {
+                files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+            }
+        }
     }
 
     @Test

@@ -27,6 +27,7 @@ public final class MironLanguageServer {
 
     /** Serves one client on the given streams; the future ends when the input closes. */
     public static Future<Void> serve(InputStream in, OutputStream out, boolean exitProcess) {
+        DisconnectLogFilter.install();
         LanguageServerImpl server = Guice.createInjector(MironServerModule.create(exitProcess))
                 .getInstance(LanguageServerImpl.class);
         Launcher<LanguageClient> launcher = Launcher.createLauncher(server, LanguageClient.class, in, out);
@@ -72,8 +73,11 @@ public final class MironLanguageServer {
     private static void serveClient(Socket client) {
         try (client) {
             serve(client.getInputStream(), client.getOutputStream(), false).get();
+            System.err.println("miron lsp: client " + client.getPort() + " disconnected");
         } catch (IOException | ExecutionException e) {
-            System.err.println("miron lsp: client connection ended: " + e.getMessage());
+            // A disconnect is normal: one line, never a stack trace (DisconnectLogFilter).
+            Throwable cause = e instanceof ExecutionException && e.getCause() != null ? e.getCause() : e;
+            System.err.println("miron lsp: client " + client.getPort() + " disconnected (" + cause.getMessage() + ")");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

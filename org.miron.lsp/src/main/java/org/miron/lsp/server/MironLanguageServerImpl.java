@@ -8,6 +8,8 @@ import org.eclipse.lsp4j.CompletionItem;
 import org.eclipse.lsp4j.CompletionList;
 import org.eclipse.lsp4j.CompletionParams;
 import org.eclipse.lsp4j.DefinitionParams;
+import org.eclipse.lsp4j.DidChangeWorkspaceFoldersParams;
+import org.eclipse.lsp4j.DidOpenTextDocumentParams;
 import org.eclipse.lsp4j.DocumentHighlight;
 import org.eclipse.lsp4j.DocumentHighlightParams;
 import org.eclipse.lsp4j.ExecuteCommandCapabilities;
@@ -15,14 +17,20 @@ import org.eclipse.lsp4j.Hover;
 import org.eclipse.lsp4j.HoverParams;
 import org.eclipse.lsp4j.InitializeParams;
 import org.eclipse.lsp4j.InitializeResult;
+import org.eclipse.lsp4j.InitializedParams;
 import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.ReferenceParams;
+import org.eclipse.lsp4j.RenameParams;
+import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.ServerCapabilities;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
+import org.eclipse.xtext.ide.server.UriExtensions;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.eclipse.xtext.util.CancelIndicator;
+
+import com.google.inject.Inject;
 
 /**
  * Xtext's language server, also for clients that open single files without any workspace folder
@@ -32,6 +40,8 @@ import org.eclipse.xtext.util.CancelIndicator;
  */
 public class MironLanguageServerImpl extends LanguageServerImpl {
     private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
+    private final WorkspaceFolderSet folders = new WorkspaceFolderSet();
+    private final FileChangeSource fileChanges = new FileChangeSource(this::didChangeWatchedFiles);
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
@@ -45,15 +55,46 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         if (workspace.getExecuteCommand() == null) {
             workspace.setExecuteCommand(new ExecuteCommandCapabilities(false));
         }
-        // Without a root Xtext reads workspace folders only if the client announced them, and fails in
-        // initialize otherwise: folders sent unannounced are used, and no folders at all work too.
-        if (params.getRootUri() == null && params.getRootPath() == null) {
-            if (params.getWorkspaceFolders() == null) {
-                params.setWorkspaceFolders(List.of());
-            }
-            workspace.setWorkspaceFolders(true);
-        }
+        // Only usable folders are indexed (a relative or odd root such as Neovim's "file://." made Xtext
+        // scan "/"), all passed as workspace folders: Xtext reads them only if the client announced
+        // them, so folders sent unannounced are used, and no folders at all work too.
+        params.setWorkspaceFolders(folders.initial(params));
+        params.setRootUri(null);
+        params.setRootPath(null);
+        workspace.setWorkspaceFolders(true);
+        fileChanges.initialize(workspace.getDidChangeWatchedFiles(), folders.folders());
         return super.initialize(params);
+    }
+
+    @Override
+    public void initialized(InitializedParams params) {
+        super.initialized(params);
+        fileChanges.start(getLanguageClient(), folders.folders());
+    }
+
+    @Override
+    public CompletableFuture<Object> shutdown() {
+        fileChanges.close();
+        return super.shutdown();
+    }
+
+    // A document outside every folder (no workspace, or a refused root) brings its own folder in, so
+    // the files it imports are found; the folder is added before the document is opened (writes
+    // run in order).
+    @Override
+    public void didOpen(DidOpenTextDocumentParams params) {
+        folders.cover(params.getTextDocument().getUri()).ifPresent(this::changeFolders);
+        super.didOpen(params);
+    }
+
+    @Override
+    public void didChangeWorkspaceFolders(DidChangeWorkspaceFoldersParams params) {
+        changeFolders(folders.filter(params));
+    }
+
+    private void changeFolders(DidChangeWorkspaceFoldersParams change) {
+        super.didChangeWorkspaceFolders(change);
+        change.getEvent().getAdded().forEach(folder -> WorkspaceRoots.folder(folder.getUri()).ifPresent(fileChanges::watch));
     }
 
     // A position outside the document (a client racing an edit, or a buggy one) gets an empty
@@ -104,6 +145,16 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         } catch (IndexOutOfBoundsException outside) {
             return List.of();
         }
+    }
+
+    @Inject
+    private UriExtensions uris;
+
+    // Issue 23, item 12: no edit that writes what is already there.
+    @Override
+    protected WorkspaceEdit rename(RenameParams params, CancelIndicator cancelIndicator) {
+        return NoOpEdits.drop(super.rename(params, cancelIndicator),
+                uri -> getWorkspaceManager().doRead(uris.toUri(uri), (document, resource) -> document));
     }
 
     // Completion also starts where the three languages want it: '<' and '"' in BT, '::' in MIRoN.

@@ -7,6 +7,7 @@ import org.eclipse.xtext.ide.server.ServerModule;
 import org.eclipse.xtext.ide.server.concurrent.IRequestManager;
 import org.eclipse.xtext.ide.server.concurrent.RequestManager;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
+import org.eclipse.xtext.util.IFileSystemScanner;
 
 import com.google.inject.AbstractModule;
 import com.google.inject.Module;
@@ -31,6 +32,7 @@ public final class MironServerModule {
                 bind(LanguageServerImpl.class).to(MironLanguageServerImpl.class);
                 bind(IRequestManager.class).to(GuardedRequestManager.class);
                 bind(RequestManager.class).to(GuardedRequestManager.class);
+                bind(IFileSystemScanner.class).to(BoundedFileSystemScanner.class);
                 if (!exitProcess) {
                     bind(ILanguageServerShutdownAndExitHandler.class).to(ILanguageServerShutdownAndExitHandler.NullImpl.class);
                 }

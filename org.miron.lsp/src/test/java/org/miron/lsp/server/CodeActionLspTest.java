@@ -18,6 +18,7 @@ import org.eclipse.lsp4j.TextEdit;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.junit.Rule;
 import org.junit.Test;
+import org.miron.testkit.lsp.LspClient;
 
 /** Quick fixes from issue codes and issue data, asked for and applied as an editor does. */
 public class CodeActionLspTest {
@@ -65,6 +66,23 @@ public class CodeActionLspTest {
         String fixed = fix("intralogistics.bt", text, "bt.retry-old-spelling", "Change to RetryUntilSuccessful");
         assertTrue(fixed.contains("<RetryUntilSuccessful num_attempts=\"2\"><Action ID=\"objectdrop\" obj_index=\"-1\"/></RetryUntilSuccessful>"));
         assertFalse(fixed.contains("Succesful"));
+    }
+
+    /**
+     * Issue 23, item 8: a built-in closed by another name (the grammar closes each built-in with its
+     * own keyword) is said as for custom nodes, and the same quick fix restores the file.
+     */
+    @Test
+    public void aBuiltinClosedByAnotherNameGetsTheCloseTagFix() throws Exception {
+        String original = Files.readString(session.workspace.resolve("intralogistics.bt"));
+        String text = original.replace("</RetryUntilSuccessful>", "</Retry>");
+        String uri = session.client.open(session.workspace.resolve("intralogistics.bt"), text);
+        Diagnostic mismatch = session.client.awaitDiagnostics(uri, ds -> ds.stream().anyMatch(d -> "bt.close-tag-mismatch".equals(code(d))))
+                .stream().filter(d -> "bt.close-tag-mismatch".equals(code(d))).findFirst().get();
+        assertEquals("</Retry> does not close <RetryUntilSuccessful>: write </RetryUntilSuccessful>", LspClient.message(mismatch));
+        assertEquals(original, fix("intralogistics.bt", text, "bt.close-tag-mismatch", "Change to RetryUntilSuccessful"));
+        String sequence = original.replaceFirst("</Sequence>", "</Fallback>");
+        assertEquals(original, fix("intralogistics.bt", sequence, "bt.close-tag-mismatch", "Change to Sequence"));
     }
 
     @Test

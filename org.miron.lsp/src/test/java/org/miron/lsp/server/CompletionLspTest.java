@@ -141,4 +141,35 @@ public class CompletionLspTest {
         String late = example("intralogistics.bt").replace("</root>", "<BehaviorTree ID=\"Late\">\n<\n</BehaviorTree>\n</root>");
         assertHas(complete("intralogistics.bt", late, "\"Late\">\n<"), "Timeout", "TreeNodesModel", "MoveTo");
     }
+
+    private static void assertLacks(List<String> labels, String... unexpected) {
+        for (String label : unexpected) {
+            assertFalse(label + " proposed in " + labels, labels.contains(label));
+        }
+    }
+
+    /** Issue 23, item 6: after `task::` only the literals, no operators. */
+    @Test
+    public void onlyWhatCanFollowAfterAnEnumType() throws Exception {
+        String text = example("intralogistics.miron") + "\nrule r2 : roqme.safety < 0.3 implies task = task::\n";
+        List<String> labels = complete("intralogistics.miron", text, "task = task::");
+        assertHas(labels, "task::dock");
+        assertLacks(labels, "&", "'", "*", "+", "-", "->", "|", "(", "<", "=");
+    }
+
+    /** Issue 23, items 6 and 7: in a version-4 file, after `<`, the version's elements only, no `<` or `</`. */
+    @Test
+    public void version4ElementsAndAttributesOnly() throws Exception {
+        String text = "<root BTCPP_format=\"4\" main_tree_to_execute=\"Main\">\n  <BehaviorTree ID=\"Main\">\n"
+                + "    <Sequence>\n      <\n      <SubTree ID=\"GoTo\" />\n    </Sequence>\n  </BehaviorTree>\n"
+                + "  <BehaviorTree ID=\"GoTo\">\n    <AlwaysSuccess/>\n  </BehaviorTree>\n</root>\n";
+        List<String> elements = complete("v4.bt", text, "<Sequence>\n      <");
+        assertHas(elements, "SequenceWithMemory", "Script", "Fallback", "GoTo");
+        assertLacks(elements, "<", "</", "SequenceStar", "FallbackStar", "SubTreePlus", "BlackboardCheckInt",
+                "BlackboardCheckDouble", "BlackboardCheckString", "RetryUntilSuccesful");
+        assertFalse(elements.toString(), elements.get(0).startsWith("<"));
+        List<String> attributes = complete("v4.bt", text, "<SubTree ID=\"GoTo\" ");
+        assertHas(attributes, "_autoremap", "/>");
+        assertLacks(attributes, "ID", "__shared_blackboard");
+    }
 }

@@ -81,6 +81,24 @@ public class IntralogisticsLspTest {
         client.awaitDiagnostics(mironUri, d -> !hasErrors(d));
     }
 
+    /**
+     * Issue 23, item 9: a renamed tree whose old name is still a node's name (the example's
+     * `<Sequence name="Charge">`): the message says no tree has the ID and names the trees.
+     */
+    @Test
+    public void aTreeRenamedAwayIsReportedAsNoSuchTree() throws Exception {
+        String mironUri = client.open(miron);
+        client.awaitDiagnostics(mironUri, d -> !hasErrors(d));
+        String btText = Files.readString(bt);
+        String btUri = client.open(bt, btText);
+        client.change(btUri, btText.replace("<BehaviorTree ID=\"Charge\">", "<BehaviorTree ID=\"Dock\">"));
+        List<Diagnostic> broken = client.awaitDiagnostics(mironUri, IntralogisticsLspTest::hasErrors);
+        String messages = broken.stream().map(LspClient::message).collect(java.util.stream.Collectors.joining("\n"));
+        assertTrue(messages, messages.contains("unknown behavior tree 'main.Charge': no BehaviorTree has this ID"));
+        assertTrue(messages, messages.contains("main.Dock"));
+        assertFalse(messages, messages.contains("not a behavior tree"));
+    }
+
     @Test
     public void editingTheImportedTreeBufferRevalidatesTheMiron() throws Exception {
         String mironUri = client.open(miron);
@@ -178,6 +196,29 @@ public class IntralogisticsLspTest {
                 .get(60, TimeUnit.SECONDS);
         assertFalse(edits.isEmpty());
         assertTrue(edits.toString(), TextEdits.apply(text, edits).contains("rule noBattery : roqme.power_autonomy < 0.3"));
+    }
+
+    private String formatted(Path file, FormattingOptions options) throws Exception {
+        String text = Files.readString(file);
+        String uri = client.open(file, text);
+        client.awaitDiagnostics(uri, d -> true);
+        return TextEdits.apply(text, client.server().getTextDocumentService()
+                .formatting(new DocumentFormattingParams(new TextDocumentIdentifier(uri), options)).get(60, TimeUnit.SECONDS));
+    }
+
+    /**
+     * Issue 23, item 10: the examples are formatter-clean through the server too, and the client's
+     * indentation (tabSize, insertSpaces) is the one used.
+     */
+    @Test
+    public void formattingKeepsTheExamplesAndUsesTheClientsIndentation() throws Exception {
+        for (Path file : List.of(miron, roqme, bt)) {
+            assertEquals(file.toString(), Files.readString(file), formatted(file, new FormattingOptions(2, true)));
+        }
+        assertTrue(formatted(miron, new FormattingOptions(4, true)).contains("\n    10 affects roqme.safety++,\n"));
+        assertTrue(formatted(miron, new FormattingOptions(4, false)).contains("\n\t10 affects roqme.safety++,\n"));
+        assertTrue(formatted(bt, new FormattingOptions(4, true)).contains("\n    <BehaviorTree ID=\"Main\">\n"));
+        assertTrue(formatted(bt, new FormattingOptions(3, false)).contains("\n\t<BehaviorTree ID=\"Main\">\n"));
     }
 
     static List<String> labels(Either<List<CompletionItem>, CompletionList> result) {

@@ -1,5 +1,6 @@
 package org.miron.lsp.server;
 
+import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
@@ -38,12 +39,13 @@ public class NavigationLspTest {
     private static LspClient client;
     private static String mironText;
     private static String mironUri;
+    private static org.eclipse.lsp4j.SemanticTokensLegend legend;
 
     @BeforeClass
     public static void setUp() throws Exception {
         workspace = Examples.copy("intralogistics");
         client = new LspClient();
-        client.initialize(workspace);
+        legend = client.initialize(workspace).getCapabilities().getSemanticTokensProvider().getLegend();
         mironText = Files.readString(workspace.resolve("intralogistics.miron")) + "\nrule r2 : roqme.safety < 0.3 implies task = task::dock\n";
         mironUri = client.open(workspace.resolve("intralogistics.miron"), mironText);
         client.awaitDiagnostics(mironUri, d -> true);
@@ -113,7 +115,38 @@ public class NavigationLspTest {
         assertTrue(renamedTree.contains("<SubTreePlus ID=\"Dock\" name=\"charge_step\"/>"));
         String renamedModel = TextEdits.apply(text, edit.getChanges().get(uri));
         assertTrue(renamedModel.contains("dock : main.Dock,"));
+        // Issue 23, item 12: every edit changes something.
+        java.util.Map<String, String> texts = java.util.Map.of(uri, text, LspClient.uri(bt), Files.readString(bt));
+        edit.getChanges().forEach((file, edits) -> edits.forEach(e -> {
+            String original = texts.get(file);
+            if (original != null) {
+                String replaced = original.substring(TextEdits.offset(original, e.getRange().getStart()),
+                        TextEdits.offset(original, e.getRange().getEnd()));
+                assertFalse(file + ": a no-op edit " + e, replaced.equals(e.getNewText()));
+            }
+        }));
         // The edits are not applied: the shared workspace stays as it was for the other tests.
+    }
+
+    /** Issue 23, item 12: renaming the tree GoTo in the .bt renames its uses and adds no edit that changes nothing. */
+    @Test
+    public void renameATreeInTheBtHasNoNoOpEdits() throws Exception {
+        Path bt = workspace.resolve("intralogistics.bt");
+        String text = Files.readString(bt);
+        String uri = client.open(bt, text);
+        client.awaitDiagnostics(uri, d -> true);
+        WorkspaceEdit edit = client.server().getTextDocumentService().rename(new RenameParams(
+                new TextDocumentIdentifier(uri), IntralogisticsLspTest.positionAfter(text, "<BehaviorTree ID=\"Go"), "Drive"))
+                .get(60, TimeUnit.SECONDS);
+        List<org.eclipse.lsp4j.TextEdit> edits = edit.getChanges().get(uri);
+        for (org.eclipse.lsp4j.TextEdit e : edits) {
+            String replaced = text.substring(TextEdits.offset(text, e.getRange().getStart()),
+                    TextEdits.offset(text, e.getRange().getEnd()));
+            assertFalse("a no-op edit " + e, replaced.equals(e.getNewText()));
+        }
+        String renamed = TextEdits.apply(text, edits);
+        assertTrue(renamed, renamed.contains("<BehaviorTree ID=\"Drive\">"));
+        assertFalse(renamed, renamed.contains("<SubTreePlus ID=\"GoTo\""));
     }
 
     @Test
@@ -123,15 +156,101 @@ public class NavigationLspTest {
         List<String> names = symbols.stream().map(s -> s.isLeft() ? s.getLeft().getName() : s.getRight().getName())
                 .collect(Collectors.toList());
         assertTrue(names.toString(), names.containsAll(List.of("task", "maxVelocity", "noBattery")));
-    }
-
-    @Test
-    public void semanticTokensOfABehaviourTreeWithTreeNodesModel() throws Exception {
+        // Issue 23, item 11: kinds that fit, so outlines and breadcrumbs have icons.
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds = kinds(mironUri);
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Field, kinds.get("task"));
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Method, kinds.get("noBattery"));
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.EnumMember, kinds.get("dock"));
+        Path roqme = workspace.resolve("intralogistics.roqme");
+        String roqmeUri = client.open(roqme, Files.readString(roqme));
+        client.awaitDiagnostics(roqmeUri, d -> true);
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> roqmeKinds = kinds(roqmeUri);
+        assertEquals(roqmeKinds.toString(), org.eclipse.lsp4j.SymbolKind.Property, roqmeKinds.get("safety"));
+        assertTrue(roqmeKinds.toString(), roqmeKinds.containsValue(org.eclipse.lsp4j.SymbolKind.Event));
+        assertTrue(roqmeKinds.toString(), roqmeKinds.containsValue(org.eclipse.lsp4j.SymbolKind.Variable));
         Path bt = workspace.resolve("intralogistics.bt");
         String btUri = client.open(bt, Files.readString(bt));
         client.awaitDiagnostics(btUri, d -> true);
-        assertNotNull(client.server().getTextDocumentService()
-                .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(btUri))).get(60, TimeUnit.SECONDS));
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> btKinds = kinds(btUri);
+        assertEquals(btKinds.toString(), org.eclipse.lsp4j.SymbolKind.Class, btKinds.get("Charge"));
+    }
+
+    /** The outline's symbols by their last name segment (the first of a name wins). */
+    private static java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds(String uri) throws Exception {
+        java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds = new java.util.LinkedHashMap<>();
+        for (Either<SymbolInformation, DocumentSymbol> symbol : client.server().getTextDocumentService()
+                .documentSymbol(new DocumentSymbolParams(new TextDocumentIdentifier(uri))).get(60, TimeUnit.SECONDS)) {
+            String name = symbol.isLeft() ? symbol.getLeft().getName() : symbol.getRight().getName();
+            kinds.putIfAbsent(name.substring(name.lastIndexOf('.') + 1),
+                    symbol.isLeft() ? symbol.getLeft().getKind() : symbol.getRight().getKind());
+        }
+        return kinds;
+    }
+
+    /** The semantic tokens of a file: "line:column text" → "type[ modifier...]". */
+    private static java.util.Map<String, String> tokens(String uri, String text) throws Exception {
+        List<Integer> data = client.server().getTextDocumentService()
+                .semanticTokensFull(new SemanticTokensParams(new TextDocumentIdentifier(uri))).get(60, TimeUnit.SECONDS).getData();
+        java.util.Map<String, String> tokens = new java.util.LinkedHashMap<>();
+        String[] lines = text.split("\n", -1);
+        int line = 0;
+        int column = 0;
+        for (int i = 0; i + 4 < data.size() + 1; i += 5) {
+            line += data.get(i);
+            column = data.get(i) == 0 ? column + data.get(i + 1) : data.get(i + 1);
+            String word = lines[line].substring(column, column + data.get(i + 2));
+            StringBuilder kind = new StringBuilder(legend.getTokenTypes().get(data.get(i + 3)));
+            for (int bit = 0; bit < legend.getTokenModifiers().size(); bit++) {
+                if ((data.get(i + 4) & (1 << bit)) != 0) {
+                    kind.append(' ').append(legend.getTokenModifiers().get(bit));
+                }
+            }
+            tokens.put((line + 1) + ":" + word, kind.toString());
+        }
+        return tokens;
+    }
+
+    /** The type of the first token with this text on the first line that contains the context. */
+    private static String tokenType(java.util.Map<String, String> tokens, String text, String context, String word) {
+        String[] lines = text.split("\n", -1);
+        for (int i = 0; i < lines.length; i++) {
+            if (lines[i].contains(context)) {
+                return tokens.get((i + 1) + ":" + word);
+            }
+        }
+        throw new AssertionError("no line with " + context);
+    }
+
+    /** Issue 23, item 15 (the server's half): names coloured by what they denote, BT elements by kind. */
+    @Test
+    public void semanticTokensSayWhatNamesDenote() throws Exception {
+        // Other tests of the class open the file as it is on disk: this one needs the extra rule back.
+        client.open(workspace.resolve("intralogistics.miron"), mironText);
+        client.awaitDiagnostics(mironUri, d -> true);
+        java.util.Map<String, String> miron = tokens(mironUri, mironText);
+        assertEquals(miron.toString(), "namespace", tokenType(miron, mironText, "dock : main.Charge", "main"));
+        assertEquals(miron.toString(), "class", tokenType(miron, mironText, "dock : main.Charge", "Charge"));
+        assertEquals(miron.toString(), "property", tokenType(miron, mironText, "rule r2 : roqme.safety", "safety"));
+        assertEquals(miron.toString(), "property", tokenType(miron, mironText, "10 affects roqme.safety", "safety"));
+        assertEquals(miron.toString(), "enumMember", tokenType(miron, mironText, "implies task = task::dock", "dock"));
+        assertEquals(miron.toString(), "variable declaration", tokenType(miron, mironText, "@varpoint task", "task"));
+        assertEquals(miron.toString(), "class", tokenType(miron, mironText, "} in main.PickDeliverChargeSubtree",
+                "PickDeliverChargeSubtree"));
+
+        Path bt = workspace.resolve("intralogistics.bt");
+        String btText = Files.readString(bt);
+        String btUri = client.open(bt, btText);
+        client.awaitDiagnostics(btUri, d -> true);
+        java.util.Map<String, String> tree = tokens(btUri, btText);
+        assertEquals(tree.toString(), "class declaration", tokenType(tree, btText, "<BehaviorTree ID=\"Charge\"", "Charge"));
+        assertEquals(tree.toString(), "class", tokenType(tree, btText, "<SubTreePlus ID=\"GoTo\"", "GoTo"));
+        assertEquals(tree.toString(), "keyword", tokenType(tree, btText, "<Sequence name=\"Charge\"", "Sequence"));
+        assertEquals(tree.toString(), "keyword", tokenType(tree, btText, "</Sequence>", "Sequence"));
+        assertEquals(tree.toString(), "function", tokenType(tree, btText, "<Action ID=\"objectdrop\"", "Action"));
+        assertEquals(tree.toString(), "class", tokenType(tree, btText, "<SubTreePlus ID=\"GoTo\"", "SubTreePlus"));
+        assertEquals(tree.toString(), "decorator", tokenType(tree, btText, "<RetryUntilSuccessful", "RetryUntilSuccessful"));
+        java.util.Set<String> kinds = new java.util.HashSet<>(tree.values());
+        assertTrue(kinds.toString(), kinds.containsAll(List.of("keyword", "function", "class", "property")));
     }
 
     @Test

@@ -87,11 +87,18 @@ public final class LspClient implements LanguageClient, AutoCloseable {
 
     /** initialize + initialized with one workspace folder. */
     public InitializeResult initialize(Path workspace) throws Exception {
+        return initialize(workspace, capabilities -> {
+        });
+    }
+
+    /** initialize + initialized with one workspace folder and capabilities the test adjusts. */
+    public InitializeResult initialize(Path workspace, java.util.function.Consumer<ClientCapabilities> adjust) throws Exception {
         InitializeParams params = new InitializeParams();
         WorkspaceClientCapabilities workspaceCapabilities = new WorkspaceClientCapabilities();
         workspaceCapabilities.setWorkspaceFolders(true);
         ClientCapabilities capabilities = new ClientCapabilities();
         capabilities.setWorkspace(workspaceCapabilities);
+        adjust.accept(capabilities);
         params.setCapabilities(capabilities);
         params.setWorkspaceFolders(List.of(new WorkspaceFolder(uri(workspace), "workspace")));
         InitializeResult result = server.initialize(params).get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
@@ -196,6 +203,37 @@ public final class LspClient implements LanguageClient, AutoCloseable {
             appliedEdits.notifyAll();
         }
         return CompletableFuture.completedFuture(new org.eclipse.lsp4j.ApplyWorkspaceEditResponse(true));
+    }
+
+    /** What the server registered dynamically (client/registerCapability), in order; all accepted. */
+    public final List<org.eclipse.lsp4j.Registration> registrations = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    @Override
+    public CompletableFuture<Void> registerCapability(org.eclipse.lsp4j.RegistrationParams params) {
+        synchronized (registrations) {
+            registrations.addAll(params.getRegistrations());
+            registrations.notifyAll();
+        }
+        return CompletableFuture.completedFuture(null);
+    }
+
+    /** The first registration of a method, once the server has sent it. */
+    public org.eclipse.lsp4j.Registration awaitRegistration(String method) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(TIMEOUT_SECONDS);
+        synchronized (registrations) {
+            while (true) {
+                for (org.eclipse.lsp4j.Registration registration : registrations) {
+                    if (registration.getMethod().equals(method)) {
+                        return registration;
+                    }
+                }
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    throw new AssertionError("no registration of " + method + " within " + TIMEOUT_SECONDS + " s");
+                }
+                registrations.wait(Math.max(1, TimeUnit.NANOSECONDS.toMillis(left)));
+            }
+        }
     }
 
     @Override

@@ -76,11 +76,25 @@ public class BtProposalProvider extends IdeContentProposalProvider {
             IIdeContentProposalAcceptor acceptor) {
     }
 
-    // Element names after '<' come from the text (the parser proposes them only in some states).
+    /**
+     * Inside a tag the text decides (issue 23, items 6 and 7): after '<' only the names the file's
+     * version has, and root (not '<', '</', nor the other version's built-ins the grammar also knows); among
+     * attributes only '>' and '/>' from the grammar (the names come from the text, without those
+     * written already and those of the other version); in a value nothing.
+     */
     @Override
     protected boolean filterKeyword(Keyword keyword, ContentAssistContext context) {
-        return !BuiltinAttributes.isElement(keyword.getValue()) || context.getRootNode() == null
-                || TagContext.at(context.getRootNode().getText(), context.getOffset()).kind() != TagContext.Kind.ELEMENT_NAME;
+        if (context.getRootNode() == null) {
+            return true;
+        }
+        TagContext tag = TagContext.at(context.getRootNode().getText(), context.getOffset());
+        String value = keyword.getValue();
+        return switch (tag.kind()) {
+            case ELEMENT_NAME -> value.equals("root");
+            case ATTRIBUTE_NAME -> value.equals(">") || value.equals("/>");
+            case ATTRIBUTE_VALUE -> false;
+            case NONE -> true;
+        };
     }
 
     /**
@@ -167,8 +181,21 @@ public class BtProposalProvider extends IdeContentProposalProvider {
             names.putIfAbsent(port.name(), entry(port.name(), tag.tag() + " attribute", ContentAssistEntry.KIND_PROPERTY,
                     BuiltinAttributes.documentation(port)));
         }
-        if (tag.tag() != null) {
+        if (EXPLICIT_FORMS.contains(tag.tag()) || SUBTREE_FORMS.contains(tag.tag()) || "BehaviorTree".equals(tag.tag())) {
+            names.putIfAbsent("ID", entry("ID", tag.tag() + " attribute", ContentAssistEntry.KIND_PROPERTY, null));
+        }
+        if (tag.tag() != null && !"BehaviorTree".equals(tag.tag()) && !"root".equals(tag.tag())
+                && !"include".equals(tag.tag())) {
             names.putIfAbsent("name", entry("name", "node name", ContentAssistEntry.KIND_PROPERTY, null));
+        }
+        if ("root".equals(tag.tag())) {
+            names.putIfAbsent("main_tree_to_execute", entry("main_tree_to_execute", "root attribute",
+                    ContentAssistEntry.KIND_PROPERTY, null));
+            names.putIfAbsent("BTCPP_format", entry("BTCPP_format", "root attribute", ContentAssistEntry.KIND_PROPERTY,
+                    null));
+        }
+        if ("include".equals(tag.tag())) {
+            names.putIfAbsent("path", entry("path", "include attribute", ContentAssistEntry.KIND_PROPERTY, null));
         }
         tag.attributes().keySet().forEach(names::remove);
         return new ArrayList<>(names.values());

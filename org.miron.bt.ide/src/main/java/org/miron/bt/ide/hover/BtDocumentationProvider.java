@@ -36,6 +36,10 @@ public class BtDocumentationProvider implements IEObjectDocumentationProvider {
             element = node;
         }
         List<String> parts = new ArrayList<>();
+        String header = header(element);
+        if (header != null) {
+            parts.add(header);
+        }
         String comment = leadingComment(element);
         if (comment != null) {
             parts.add(comment);
@@ -53,6 +57,49 @@ public class BtDocumentationProvider implements IEObjectDocumentationProvider {
             }
         }
         return parts.isEmpty() ? null : String.join("\n\n", parts);
+    }
+
+    /**
+     * What a tree or node is and where it is defined (issue 23, item 5: a tree without comment or
+     * declared ports had no hover at all, also from the .miron that names it):
+     * "**BehaviorTree** `Charge` — `intralogistics.bt` line 15".
+     */
+    private static String header(EObject element) {
+        StringBuilder text = new StringBuilder();
+        if (element instanceof BehaviorTree tree) {
+            text.append("**BehaviorTree**");
+            if (tree.getName() != null) {
+                text.append(" `").append(tree.getName()).append('`');
+            }
+        } else if (element instanceof TreeNode node && node.getTag() != null) {
+            text.append("**").append(node.getTag()).append("**");
+            String id = node.attribute("ID");
+            if (id != null) {
+                text.append(" `").append(id).append('`');
+            }
+            String name = node.attribute("name");
+            if (name != null) {
+                text.append(" named `").append(name).append('`');
+            }
+            BehaviorTree tree = org.eclipse.xtext.EcoreUtil2.getContainerOfType(node, BehaviorTree.class);
+            if (tree != null && tree.getName() != null) {
+                text.append(" in BehaviorTree `").append(tree.getName()).append('`');
+            }
+        } else {
+            return null;
+        }
+        ICompositeNode node = NodeModelUtils.findActualNodeFor(element);
+        if (node != null && element.eResource() != null && element.eResource().getURI() != null) {
+            String all = node.getRootNode().getText();
+            int line = 1;
+            for (int i = 0; i < node.getOffset() && i < all.length(); i++) {
+                if (all.charAt(i) == '\n') {
+                    line++;
+                }
+            }
+            text.append(" — `").append(element.eResource().getURI().lastSegment()).append("` line ").append(line);
+        }
+        return text.toString();
     }
 
     private static String idOf(EObject element) {

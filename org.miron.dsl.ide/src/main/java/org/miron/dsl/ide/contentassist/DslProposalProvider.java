@@ -88,6 +88,24 @@ public class DslProposalProvider extends IdeContentProposalProvider {
         }
     }
 
+    /**
+     * Right after "::" or "." only a name can follow (issue 23, item 6): the parser's follow set there
+     * also held operators ("&", "'", "->", ...) of the expression before.
+     */
+    @Override
+    protected boolean filterKeyword(Keyword keyword, ContentAssistContext context) {
+        if (!super.filterKeyword(keyword, context)) {
+            return false;
+        }
+        if (Character.isLetter(keyword.getValue().charAt(0)) || context.getRootNode() == null) {
+            return true;
+        }
+        String text = context.getRootNode().getText();
+        int end = Math.min(context.getOffset() - context.getPrefix().length(), text.length());
+        String before = text.substring(0, Math.max(0, end));
+        return !before.endsWith("::") && !before.endsWith(".");
+    }
+
     /** A rule like FunctionName: 'avg' | 'min' | ... (no names, numbers or other rules). */
     private static boolean onlyKeywords(ParserRule rule) {
         return !GrammarUtil.containedRuleCalls(rule).iterator().hasNext();

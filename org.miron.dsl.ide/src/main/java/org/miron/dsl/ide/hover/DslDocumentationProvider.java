@@ -15,6 +15,7 @@ import org.miron.dsl.miron.NumericSampledType;
 import org.miron.dsl.miron.VariationPoint;
 import org.miron.dsl.roqme.BeliefVariable;
 import org.miron.dsl.roqme.DocumentableElement;
+import org.miron.dsl.roqme.FunctionCall;
 import org.miron.dsl.roqme.Observation;
 import org.miron.dsl.roqme.RoqmePackage;
 
@@ -34,6 +35,9 @@ public class DslDocumentationProvider implements IEObjectDocumentationProvider {
         List<String> parts = new ArrayList<>();
         if (element instanceof DocumentableElement documented && documented.getDocumentation() != null) {
             parts.add(comment(documented.getDocumentation()));
+        }
+        if (element instanceof FunctionCall call && RoqmeFunctions.describe(call.getFunction()) != null) {
+            parts.add(RoqmeFunctions.describe(call.getFunction()));
         }
         if (element instanceof VariationPoint varpoint) {
             parts.add(values(varpoint));
