@@ -82,10 +82,15 @@ final class ShapeKinds {
         return node.getTag() == null ? "?" : node.getTag();
     }
 
-    /** A node the weaver adds: a VariantAction, or a Switch or Parallel it writes (named miron_...). */
+    /**
+     * A node the weaver adds (docs/generators.md): a VariantAction, the monitoring Parallel and Repeat
+     * ({@code monitoring_...}), or a variant Switch (its variable a varpoint's {@code {<vp>_sel}} key).
+     */
     boolean isWoven(TreeNode node) {
         String name = BtAttributes.value(node.getAttributes(), "name");
-        String type = typeName(node, null);
-        return "VariantAction".equals(type) || name != null && name.startsWith("miron");
+        String variable = BtAttributes.value(node.getAttributes(), "variable");
+        return "VariantAction".equals(typeName(node, null)) || name != null && name.startsWith("monitoring_")
+                || node.getTag() != null && node.getTag().startsWith("Switch") && variable != null
+                        && variable.matches("\\{\\w+_sel}");
     }
 }
