@@ -132,7 +132,7 @@ public final class TimelineReport {
         out.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>")
                 .append(escape(title)).append("</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}"
                         + "h2{margin-top:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;"
-                        + "text-align:left;font-size:13px}svg text{font-size:12px}figure{margin:1em 0}figcaption{font-weight:bold;margin-bottom:.3em}</style></head><body>\n")
+                        + "text-align:left;font-size:13px}svg text{font-size:12px}figure{margin:1em 0;overflow-x:auto}figcaption{font-weight:bold;margin-bottom:.3em}</style></head><body>\n")
                 .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
                 .append(" adaptations in ").append(seconds(end)).append(" s")
                 .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");

@@ -56,13 +56,13 @@ final class TreeSnapshots {
         }
     }
 
-    /** The section: a picture at the start (presets) and after each decision that switched a variant. */
+    /** The section: a picture before the first decision and after each decision that switched a variant. */
     String html(List<BusRecorder.Event> events) {
         StringBuilder out = new StringBuilder("<h2>Behaviour tree</h2>\n<p>The woven tree as the executor runs it; in each "
                 + "variant Switch the branch of the current decision is outlined in green and the others are dimmed.</p>\n");
         Map<String, String> values = new LinkedHashMap<>();
         int shown = 0;
-        out.append(picture("start (presets)", values));
+        out.append(picture("before the first decision", values));
         for (BusRecorder.Event e : events) {
             if (!e.topic().equals(Topics.DECISION) || shown >= MAX) {
                 continue;
