@@ -46,6 +46,27 @@ public final class VariantHighlight {
         return classes;
     }
 
+    /** A Switch of a diagram: its node, the blackboard key it reads, its cases in order and its children's ids. */
+    public record SwitchNode(String node, String key, List<String> cases, List<String> children) {
+    }
+
+    /** Every Switch reading a blackboard key, for pages that highlight the running branch themselves. */
+    public static List<SwitchNode> switches(Diagram diagram) {
+        List<SwitchNode> result = new ArrayList<>();
+        for (Shape shape : diagram.shapes()) {
+            String variable = isSwitch(shape) ? port(shape, "variable") : null;
+            Matcher key = variable == null ? null : KEY.matcher(variable);
+            if (key != null && key.matches() && !shape.children().isEmpty()) {
+                List<String> cases = new ArrayList<>();
+                for (int k = 1; k < shape.children().size(); k++) {
+                    cases.add(port(shape, "case_" + k));
+                }
+                result.add(new SwitchNode(shape.id(), key.group(1), cases, shape.children().stream().map(Shape::id).toList()));
+            }
+        }
+        return result;
+    }
+
     private static boolean isSwitch(Shape shape) {
         return SWITCH.matcher(shape.title()).matches() || SWITCH.matcher(shape.type()).matches();
     }

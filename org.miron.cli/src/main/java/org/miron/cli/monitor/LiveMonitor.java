@@ -8,8 +8,10 @@ import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.diagram.BtShapes;
 import org.miron.diagram.Diagram;
 import org.miron.diagram.Diagrams;
+import org.miron.diagram.VariantHighlight;
 import org.miron.generator.standalone.ModelLoader;
 import org.miron.runtime.Endpoints;
+import org.miron.runtime.Json;
 
 /** Starts the live monitor of a tree file for {@code miron execute --monitor} and {@code miron demo --monitor}. */
 public final class LiveMonitor {
@@ -26,7 +28,9 @@ public final class LiveMonitor {
         Diagram diagram = BtShapes.expanded(resource, null);
         String svg = Diagrams.svg(diagram);
         String title = "MIRoN live: " + treeFile.getFileName();
-        return new MonitorServer(port, MonitorPage.html(title, svg), endpoints.busIn(), endpoints.busOut(), metricName);
+        String switches = Json.MAPPER.writeValueAsString(VariantHighlight.switches(diagram));
+        return new MonitorServer(port, MonitorPage.html(title, svg, switches), endpoints.busIn(), endpoints.busOut(),
+                metricName);
     }
 
     /** Metrics named as they come: namespace/name → name. */

@@ -13,8 +13,12 @@ public final class MonitorPage {
     private MonitorPage() {
     }
 
-    /** The page for a tree whose SVG is {@code svg}. */
-    public static String html(String title, String svg) {
+    /**
+     * The page for a tree whose SVG is {@code svg}; {@code switches} (JSON: [{node, key, cases,
+     * children}]) are the variant Switches, whose running branch the page outlines as varpoint
+     * values arrive (the weaver's Switch over {@code {vp_sel}} follows varpoint {@code vp}).
+     */
+    public static String html(String title, String svg, String switches) {
         return """
                 <!DOCTYPE html>
                 <html lang="en"><head><meta charset="utf-8"><title>%1$s</title>
@@ -40,6 +44,12 @@ public final class MonitorPage {
                 </aside>
                 <script>
                 const STATUSES=['running','success','failure','skipped'];
+                const SWITCHES=%4$s;
+                function highlight(vp,value){SWITCHES.filter(s=>s.key===vp+'_sel').forEach(s=>{
+                  let active=s.cases.indexOf(String(value));if(active<0)active=s.children.length-1;
+                  s.children.forEach((child,i)=>document.querySelectorAll('#tree g[data-id]').forEach(g=>{
+                    const id=g.dataset.id;if(id!==child&&!id.startsWith(child+'.'))return;
+                    g.classList.toggle('active',i===active&&id===child);g.classList.toggle('inactive',i!==active);}));});}
                 function node(id){return document.querySelector('#tree g[data-id="'+CSS.escape(id)+'"]');}
                 function setStatus(id,to){const g=node(id);if(!g)return;STATUSES.forEach(s=>g.classList.remove('status-'+s));
                   const s=String(to).toLowerCase();if(STATUSES.includes(s))g.classList.add('status-'+s);}
@@ -55,17 +65,18 @@ public final class MonitorPage {
                 events.onerror=()=>{connection.textContent='reconnecting…';connection.className='off';};
                 events.addEventListener('snapshot',e=>{const s=JSON.parse(e.data);clearStatuses();
                   Object.entries(s.statuses).forEach(([id,to])=>setStatus(id,to));
-                  Object.entries(s.varpoints).forEach(([n,v])=>row('varpoints',n,v));
+                  Object.entries(s.varpoints).forEach(([n,v])=>{row('varpoints',n,v);highlight(n,v);});
                   Object.entries(s.metrics).forEach(([n,v])=>row('metrics',n,v));
                   document.getElementById('tree-info').textContent=s.tree?'tree '+s.tree:'no executor yet';});
                 events.addEventListener('reset',e=>{clearStatuses();const m=JSON.parse(e.data);
                   document.getElementById('tree-info').textContent='tree '+m.tree+' (started '+new Date(m.time).toLocaleTimeString()+')';});
                 events.addEventListener('status',e=>{const m=JSON.parse(e.data);setStatus(m.node,m.to);});
-                events.addEventListener('varpoint',e=>{const m=JSON.parse(e.data);row('varpoints',m.name,m.value);});
+                events.addEventListener('varpoint',e=>{const m=JSON.parse(e.data);row('varpoints',m.name,m.value);highlight(m.name,m.value);});
                 events.addEventListener('metric',e=>{const m=JSON.parse(e.data);row('metrics',m.name,m.value);});
                 </script>
                 </body></html>
-                """.formatted(escape(title), SvgWriter.STYLE, svg.replace("<style>" + SvgWriter.STYLE + "</style>", ""));
+                """.formatted(escape(title), SvgWriter.STYLE, svg.replace("<style>" + SvgWriter.STYLE + "</style>", ""),
+                        switches.replace("</", "<\\/"));
     }
 
     static String escape(String text) {
