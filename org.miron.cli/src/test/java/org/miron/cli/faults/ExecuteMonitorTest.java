@@ -40,7 +40,7 @@ public class ExecuteMonitorTest {
     public void pageFollowsTheRun() throws Exception {
         Path tree = tmp.getRoot().toPath().resolve("mission.bt");
         Files.writeString(tree, "<root main_tree_to_execute=\"Main\">\n  <BehaviorTree ID=\"Main\">\n"
-                + "    <Repeat num_cycles=\"3\" name=\"rounds\">\n      <Sequence name=\"round\">\n"
+                + "    <Repeat num_cycles=\"5\" name=\"rounds\">\n      <Sequence name=\"round\">\n"
                 + "        <Action ID=\"Fetch\"/>\n        <Action ID=\"Deliver\"/>\n      </Sequence>\n    </Repeat>\n"
                 + "  </BehaviorTree>\n</root>\n");
         SkillTable.Entry slow = new SkillTable.Entry(400, "SUCCESS", NullNode.getInstance(), Json.object());
@@ -59,9 +59,14 @@ public class ExecuteMonitorTest {
             assertTrue(page, page.contains("data-id=\"0.0.1\"") && page.contains(">Deliver<"));
             long end = System.currentTimeMillis() + TIMEOUT;
             boolean seen = false;
-            while (!seen && System.currentTimeMillis() < end && execute.output().indexOf("finished") < 0) {
-                JsonNode state = Json.MAPPER.readTree(http.send(HttpRequest.newBuilder(URI.create(url.group(1) + "state"))
-                        .build(), HttpResponse.BodyHandlers.ofString()).body());
+            while (!seen && System.currentTimeMillis() < end) {
+                JsonNode state;
+                try {
+                    state = Json.MAPPER.readTree(http.send(HttpRequest.newBuilder(URI.create(url.group(1) + "state"))
+                            .build(), HttpResponse.BodyHandlers.ofString()).body());
+                } catch (java.io.IOException gone) {
+                    break; // the run ended, and its page with it
+                }
                 seen = state.path("tree").asText().equals("Main") && state.path("statuses").has("0.0.1");
                 Thread.sleep(20);
             }
