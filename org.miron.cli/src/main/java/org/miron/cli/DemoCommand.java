@@ -86,6 +86,11 @@ public class DemoCommand implements Callable<Integer> {
             description = "the RoQME provider's tick in scenario time (default: ${DEFAULT-VALUE})")
     long period;
 
+    @Option(names = "--monitor", paramLabel = "PORT",
+            description = "serve the live monitor page (the running tree coloured by node status, the variation points "
+                    + "and metrics) on http://127.0.0.1:PORT/ while the demo runs (docs/diagrams.md)")
+    Integer monitorPort;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -178,9 +183,11 @@ public class DemoCommand implements Callable<Integer> {
         try {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
                     out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend)
-                    .provider(roqme, period).run();
+                    .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());
+        } catch (java.net.BindException e) {
+            return usage("miron demo: error: cannot serve the monitor on 127.0.0.1:" + monitorPort + ": " + e.getMessage());
         }
         console.println();
         console.println("MIRoN demo: " + result.adaptations() + " adaptations, " + result.parameterChanges()

@@ -8,6 +8,9 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import java.io.IOException;
+import org.miron.cli.monitor.LiveMonitor;
+import org.miron.cli.monitor.MonitorServer;
 import org.miron.executor.BtBuildException;
 import org.miron.executor.NodeStatus;
 import org.miron.executor.trace.ConsoleTracePrinter;
@@ -53,6 +56,11 @@ public final class ExecuteCommand implements Callable<Integer> {
                     + "without a result by then the node fails and the skill is aborted")
     Map<String, Long> skillDeadlines = new LinkedHashMap<>();
 
+    @Option(names = "--monitor", paramLabel = "PORT",
+            description = "serve the live monitor page (the tree coloured by node status, the variation points and "
+                    + "metrics) on http://127.0.0.1:PORT/ while the tree runs (docs/diagrams.md)")
+    Integer monitorPort;
+
     @Override
     public Integer call() {
         if (!Files.isRegularFile(treeFile)) {
@@ -60,7 +68,17 @@ public final class ExecuteCommand implements Callable<Integer> {
             return 2;
         }
         Endpoints endpoints = new Endpoints(request.endpoint, Endpoints.DEFAULT_SKILL, skillEvents, busIn.endpoint, busOut.endpoint);
-        try (LiveExecutor executor = new LiveExecutor(endpoints)) {
+        MonitorServer monitor = null;
+        if (monitorPort != null) {
+            try {
+                monitor = LiveMonitor.start(monitorPort, treeFile, endpoints, LiveMonitor.plainNames());
+            } catch (IOException | RuntimeException e) {
+                System.err.println("miron execute: error: cannot serve the monitor on 127.0.0.1:" + monitorPort + ": " + e.getMessage());
+                return 2;
+            }
+            System.out.println("live monitor: " + monitor.url());
+        }
+        try (MonitorServer page = monitor; LiveExecutor executor = new LiveExecutor(endpoints)) {
             try {
                 executor.skillDeadlines(new SkillDeadlines(skillDeadlines));
             } catch (IllegalArgumentException e) {

@@ -7,9 +7,9 @@ import picocli.CommandLine.Command;
 @Command(name = "miron", mixinStandardHelpOptions = true, versionProvider = BuildVersion.class,
         scope = CommandLine.ScopeType.INHERIT,
         description = "MIRoN toolchain: behaviour trees, RoQME and MIRoN models for self-adaptive robots: check, "
-                + "format, convert (BehaviorTree.CPP 3 and 4) and generate models; serve them to editors (lsp); run the broker, engine, skill-interface "
+                + "format, convert (BehaviorTree.CPP 3 and 4), generate and render (SVG diagrams) models; serve them to editors (lsp); run the broker, engine, skill-interface "
                 + "mock, scenario player and BT executor; or all of them at once with demo.",
-        subcommands = { CheckCommand.class, FormatCommand.class, ConvertCommand.class, GenerateCommand.class,
+        subcommands = { CheckCommand.class, FormatCommand.class, ConvertCommand.class, GenerateCommand.class, RenderCommand.class,
                 DemoCommand.class, BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class, RoqmeCommand.class,
                 ExecuteCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
 public class MironCli implements Runnable {

@@ -166,6 +166,17 @@ public class DemoCommandTest {
         // Each adaptation says why (issue 27's explanation), inputs in the model's names.
         assertTrue(report, report.contains("<td>0.8</td><td>rule crowdedCorridor (crowding = "));
         assertTrue(report, !report.contains("metric_Hospital_") && !report.contains("context_Hospital_"));
+        assertTrue(report, report.matches("(?s).*<td>[^<]*qos\\.safety = [0-9.]+[^<]*</td>.*"));
+        // The woven tree after the decision to charge first: the ChargeFirst branch of the
+        // preparation Switch (Main's mission, second child) outlined, the default branch dimmed.
+        int figure = report.indexOf("preparation → charge", report.indexOf("<h2>Behaviour tree</h2>"));
+        assertTrue(report, figure > 0);
+        String charging = report.substring(figure, report.indexOf("</figure>", figure));
+        assertTrue(charging, charging.matches("(?s).*<g class=\"[^\"]*\\bactive\\b[^\"]*\" data-id=\"0\\.1\\.1\\.0\".*"));
+        assertTrue(charging, charging.matches("(?s).*<g class=\"[^\"]*\\binactive\\b[^\"]*\" data-id=\"0\\.1\\.1\\.2\".*"));
+        // What the robot did: the charger run among the skills.
+        String skills = report.substring(report.indexOf("<h2>Skills</h2>"));
+        assertTrue(skills, skills.contains("toCharger") && skills.contains("class=\"skill-run\""));
     }
 
     /**

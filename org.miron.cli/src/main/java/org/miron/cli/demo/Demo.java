@@ -6,6 +6,9 @@ import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.miron.cli.ModelNames;
+import org.miron.cli.monitor.LiveMonitor;
+import org.miron.cli.monitor.MonitorServer;
 import org.miron.executor.NodeStatus;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.broker.Broker;
@@ -44,6 +47,8 @@ public final class Demo {
     private long settleMs = 1500;
     private CompiledModel roqme;
     private long periodMs = 1000;
+    private ModelNames names = ModelNames.none();
+    private Integer monitorPort;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
             PrintWriter out) {
@@ -78,6 +83,18 @@ public final class Demo {
         return this;
     }
 
+    /** How the model names its inputs, for the report and the live page. */
+    public Demo names(ModelNames modelNames) {
+        this.names = modelNames;
+        return this;
+    }
+
+    /** Serves the live monitor page on 127.0.0.1:port while the demo runs (null: none). */
+    public Demo monitor(Integer port) {
+        this.monitorPort = port;
+        return this;
+    }
+
     public Result run() throws EngineStartException, InterruptedException, java.io.IOException {
         Path decisionLog = outDir.resolve("decisions.jsonl");
         EngineOptions options = new EngineOptions(ioJson).endpoints(endpoints);
@@ -90,7 +107,12 @@ public final class Demo {
                         skills).start();
                 Engine engine = Engine.create(options);
                 LiveProvider provider = roqme == null ? null
-                        : new LiveProvider(roqme, periodMs, 5000, endpoints.busIn(), endpoints.busOut()).timeScale(timeScale)) {
+                        : new LiveProvider(roqme, periodMs, 5000, endpoints.busIn(), endpoints.busOut()).timeScale(timeScale);
+                MonitorServer monitor = monitorPort == null ? null
+                        : LiveMonitor.start(monitorPort, tree, endpoints, names::qualified)) {
+            if (monitor != null) {
+                out.println("MIRoN demo: live monitor on " + monitor.url() + " (open it in a browser)");
+            }
             Narrator narrator = new Narrator(out, engine.model());
             try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
                     .start();
@@ -125,8 +147,17 @@ public final class Demo {
                 scenarioOver.set(true);
                 executor.stop();
                 robot.join(5000);
-                Path report = new TimelineReport("MIRoN demo: " + engine.model().model(), recorder.events(),
-                        recorder.elapsed()).write(outDir.resolve("report.html"));
+                TimelineReport timeline = new TimelineReport("MIRoN demo: " + engine.model().model(), recorder.events(),
+                        recorder.elapsed(), names);
+                TreeSnapshots trees = TreeSnapshots.of(tree, ioJson);
+                if (trees != null) {
+                    timeline.section(trees.html(recorder.events()));
+                }
+                SkillTimeline skillRuns = new SkillTimeline(recorder.events(), recorder.elapsed());
+                if (!skillRuns.isEmpty()) {
+                    timeline.section(skillRuns.html());
+                }
+                Path report = timeline.write(outDir.resolve("report.html"));
                 int adaptations = (int) recorder.events().stream().filter(e -> e.topic().equals("miron.decision"))
                         .mapToLong(e -> e.body().path("changed").size()).sum();
                 return new Result(adaptations, skillInterface.history().size(), missions.get(), report, decisionLog);

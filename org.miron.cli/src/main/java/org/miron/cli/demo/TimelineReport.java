@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.miron.cli.ModelNames;
 import org.miron.runtime.bus.Topics;
 
 /**
@@ -42,8 +43,18 @@ public final class TimelineReport {
     /** Event contexts (eventtype) by name: when each occurred. */
     private final Map<String, List<Long>> eventContexts = new LinkedHashMap<>();
 
+    /** More sections, after the decisions: the tree pictures, the skills. */
+    private final List<String> sections = new ArrayList<>();
+    private final ModelNames names;
+
     public TimelineReport(String title, List<BusRecorder.Event> events, long end) {
+        this(title, events, end, ModelNames.none());
+    }
+
+    /** A report naming the inputs as the model does ({@code roqme.safety}). */
+    public TimelineReport(String title, List<BusRecorder.Event> events, long end, ModelNames names) {
         this.title = title;
+        this.names = names;
         this.end = Math.max(1, end);
         Map<String, String> applied = new LinkedHashMap<>();
         for (BusRecorder.Event e : events) {
@@ -64,7 +75,7 @@ public final class TimelineReport {
                     String vp = changed.asText();
                     String now = body.path("decisions").path(vp).asText();
                     adaptations.add(new String[] { seconds(e.at()), vp, applied.getOrDefault(vp, "(start)"), now,
-                            body.path("why").path(vp).path("because").asText(""), inputsOf(body.path("inputs")) });
+                            body.path("why").path(vp).path("because").asText(""), inputsOf(body.path("inputs"), names) });
                     applied.put(vp, now);
                 }
             } else if (e.topic().equals(Topics.STATUS) && body.path("state").asText().equals("degraded")) {
@@ -89,18 +100,25 @@ public final class TimelineReport {
         return String.join(", ", parts);
     }
 
-    private static String inputsOf(JsonNode inputs) {
+    private static String inputsOf(JsonNode inputs, ModelNames names) {
         List<String> parts = new ArrayList<>();
         inputs.fields().forEachRemaining(f -> {
             if (!f.getKey().endsWith("_known") && !f.getKey().contains("_input") && !f.getKey().endsWith("_current")) {
                 JsonNode v = f.getValue();
-                // In the model's names (safety, shift), not the MiniZinc parameters'.
-                String name = f.getKey().startsWith("metric_") || f.getKey().startsWith("context_")
-                        ? Narrator.shortName(f.getKey()) : f.getKey();
+                // In the model's names (roqme.safety, qos.shift), not the MiniZinc parameters'.
+                String name = names.parameter(f.getKey());
                 parts.add(name + " = " + (v.isFloatingPointNumber() ? fmt(v.asDouble()) : v.asText()));
             }
         });
         return String.join(", ", parts);
+    }
+
+    /** Adds a section (HTML) after the adaptations. */
+    public TimelineReport section(String html) {
+        if (html != null && !html.isEmpty()) {
+            sections.add(html);
+        }
+        return this;
     }
 
     public Path write(Path file) throws IOException {
@@ -114,7 +132,7 @@ public final class TimelineReport {
         out.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>")
                 .append(escape(title)).append("</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}"
                         + "h2{margin-top:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;"
-                        + "text-align:left;font-size:13px}svg text{font-size:12px}</style></head><body>\n")
+                        + "text-align:left;font-size:13px}svg text{font-size:12px}figure{margin:1em 0;overflow-x:auto}figcaption{font-weight:bold;margin-bottom:.3em}</style></head><body>\n")
                 .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
                 .append(" adaptations in ").append(seconds(end)).append(" s")
                 .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");
@@ -144,7 +162,9 @@ public final class TimelineReport {
             }
             out.append("</tr>\n");
         }
-        return out.append("</table>\n</body></html>\n").toString();
+        out.append("</table>\n");
+        sections.forEach(out::append);
+        return out.append("</body></html>\n").toString();
     }
 
     /** Numeric series as step lines over a shared value axis. */

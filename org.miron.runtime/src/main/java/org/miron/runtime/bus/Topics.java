@@ -12,6 +12,9 @@ public final class Topics {
     public static final String OVERRIDE_PREFIX = "miron.override.";
     public static final String DECISION = "miron.decision";
     public static final String STATUS = "miron.status";
+    /** The BT executor: every node status change, and the tree it runs (docs/wire-formats.md). */
+    public static final String BT_STATUS = "miron.bt.status";
+    public static final String BT_TREE = "miron.bt.tree";
     /** The broker's own topics: its hello (with its epoch) and the replies to sync subscriptions. */
     public static final String BROKER_PREFIX = "miron.broker.";
     public static final String BROKER_HELLO = "miron.broker.hello";

@@ -62,6 +62,16 @@ public final class DecisionFeed implements AutoCloseable {
         }
     }
 
+    /** Publishes on the bus through the executor's connection (its node statuses). */
+    public void publish(String topic, String body) {
+        bus.publish(topic, body);
+    }
+
+    /** Publishes and re-announces after a broker restart (the tree being run). */
+    public void publishRetained(String topic, String body) {
+        bus.publishRetained(topic, topic, body);
+    }
+
     /** Decisions dropped because they were malformed. */
     public long rejectedCount() {
         return rejected;

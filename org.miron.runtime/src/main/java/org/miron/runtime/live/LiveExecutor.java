@@ -14,6 +14,7 @@ import org.miron.executor.skills.VariantActionNode;
 import org.miron.executor.skills.VariantSource;
 import org.miron.executor.trace.StatusListener;
 import org.miron.runtime.Endpoints;
+import org.miron.runtime.bus.Topics;
 import org.miron.runtime.skill.SkillDeadlines;
 import org.miron.runtime.skill.ZmqSkillClient;
 
@@ -59,6 +60,10 @@ public final class LiveExecutor implements AutoCloseable {
         tree.feedBlackboardFrom(blackboard);
         skills.start();
         feed = new DecisionFeed(endpoints.busIn(), endpoints.busOut(), variants, blackboard).start();
+        // Monitors follow the run on the bus: the tree, then every status change (docs/wire-formats.md).
+        StatusPublisher statuses = new StatusPublisher(tree, feed::publish);
+        feed.publishRetained(Topics.BT_TREE, statuses.treeMessage(treeFile.toAbsolutePath().toString()));
+        tree.addListener(statuses);
         return this;
     }
 

@@ -1,0 +1,15 @@
+/**
+ * The live monitor of {@code miron execute --monitor PORT} and {@code miron demo --monitor PORT}
+ * (docs/diagrams.md): {@link org.miron.cli.monitor.LiveMonitor} draws the tree the executor runs
+ * (org.miron.diagram's run-time view) and starts {@link org.miron.cli.monitor.MonitorServer}, the
+ * JDK's HTTP server on 127.0.0.1 serving {@link org.miron.cli.monitor.MonitorPage} and server-sent
+ * events; {@code MonitorState} keeps what the page shows from the bus (node statuses, varpoint
+ * values, metrics).
+ *
+ * <p>Why the bus and not the executor in the same process: the page then shows any executor that
+ * publishes {@code miron.bt.status} (docs/wire-formats.md), goes on when one stops and another
+ * starts, and an editor's diagram could follow the same messages. Why server-sent events: one
+ * direction is all the page needs, browsers reconnect by themselves, and the JDK serves them
+ * without a web framework.
+ */
+package org.miron.cli.monitor;

@@ -1,0 +1,95 @@
+package org.miron.cli.monitor;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.HashSet;
+import java.util.Set;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.Assume;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.miron.cli.MironCli;
+import org.miron.testkit.RepositoryRoot;
+
+import com.fasterxml.jackson.databind.JsonNode;
+
+import picocli.CommandLine;
+
+/**
+ * The live page in headless Chromium while `miron demo --monitor` runs the hospital example; the
+ * assertions read the DOM the browser built: node statuses change as the tree runs, and the
+ * decision to charge first moves the outline of the preparation Switch from its default branch to
+ * ChargeFirst (node 0.1.1.0). Skipped, saying so, where no Chromium is installed.
+ */
+public class LivePageBrowserTest {
+    private static final long TIMEOUT_MS = 120_000;
+    private static final String PREPARATION = "document.querySelector('#varpoints tr[data-name=\"preparation\"] td')";
+    private static final String CHARGE_FIRST = "document.querySelector('#tree g[data-id=\"0.1.1.0\"]').classList";
+
+    @Rule
+    public TemporaryFolder temp = new TemporaryFolder();
+
+    @Test
+    public void statusesAndTheActiveVariantChangeInTheBrowser() throws Exception {
+        String chromium = HeadlessChromium.find().orElse(null);
+        if (chromium == null) {
+            System.err.println("LivePageBrowserTest: skipped, no chromium on the PATH (apt-get install chromium)");
+        }
+        Assume.assumeNotNull(chromium);
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        AtomicInteger status = new AtomicInteger(-1);
+        String demoDir = temp.newFolder("demo").getPath();
+        Thread demo = new Thread(() -> status.set(cli.execute("demo", "--model",
+                RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron").toString(), "--out",
+                demoDir, "--time-scale", "0.6", "--monitor", "0")), "demo");
+        demo.start();
+        Pattern url = Pattern.compile("live monitor on (http://127\\.0\\.0\\.1:\\d+/)");
+        long end = System.currentTimeMillis() + TIMEOUT_MS;
+        while (!url.matcher(out.toString()).find() && demo.isAlive() && System.currentTimeMillis() < end) {
+            Thread.sleep(20);
+        }
+        Matcher found = url.matcher(out.toString());
+        assertTrue(out + "\n" + err, found.find());
+        try (HeadlessChromium browser = new HeadlessChromium(chromium, temp.newFolder("profile").toPath())) {
+            browser.open(found.group(1));
+            // Statuses change: several different sets of running nodes are seen while the tree runs.
+            Set<String> runningSets = new HashSet<>();
+            boolean sawDefault = false;
+            boolean sawCharge = false;
+            while (System.currentTimeMillis() < end && !(runningSets.size() >= 3 && sawDefault && sawCharge)) {
+                JsonNode running = browser.evaluate("Array.from(document.querySelectorAll('#tree g.status-running'))"
+                        + ".map(g=>g.dataset.id).join(',')");
+                if (running != null && !running.asText().isEmpty()) {
+                    runningSets.add(running.asText());
+                }
+                JsonNode preparation = browser.evaluate(PREPARATION + "?" + PREPARATION + ".textContent:''");
+                String value = preparation == null ? "" : preparation.asText();
+                if (value.equals("none")) {
+                    JsonNode inactive = browser.evaluate(CHARGE_FIRST + ".contains('inactive')");
+                    sawDefault |= inactive != null && inactive.asBoolean();
+                } else if (value.equals("charge") && sawDefault) {
+                    JsonNode active = browser.evaluate(CHARGE_FIRST + ".contains('active')&&!" + CHARGE_FIRST
+                            + ".contains('inactive')");
+                    sawCharge |= active != null && active.asBoolean();
+                }
+                Thread.sleep(50);
+            }
+            assertTrue("running nodes seen: " + runningSets, runningSets.size() >= 3);
+            assertTrue("ChargeFirst dimmed while preparation = none", sawDefault);
+            assertTrue("ChargeFirst outlined once preparation = charge", sawCharge);
+        }
+        demo.join(TIMEOUT_MS);
+        assertEquals(err.toString(), 0, status.get());
+    }
+}
