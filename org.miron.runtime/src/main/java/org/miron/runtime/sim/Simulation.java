@@ -88,6 +88,7 @@ public final class Simulation {
                 ? new Decider(setup.io(), new NativeBackend(setup.io()), inputs, new EngineStatus(setup.io().model(), "native"))
                 : null;
         TreeContext context = new TreeContext(() -> now);
+        context.onProblem(world::problem); // e.g. a skill not pushed for a port nothing wrote: said once in the results
         this.tree = Setup.buildTree(setup.tree(), context, variants, new SkillActionStrategy(world::push));
         tree.feedBlackboardFrom(blackboard);
         for (InputSpec in : setup.io().inputs()) {
@@ -254,6 +255,7 @@ public final class Simulation {
         for (int i = 0; i < pubs.size(); i++) {
             Publication p = pubs.get(i);
             if (p.value() == null) {
+                nextPublish[i] = Long.MAX_VALUE; // an event: published when it occurs
                 continue;
             }
             boolean due = all || (p.everyMs() != null && nextPublish[i] <= now);

@@ -56,6 +56,9 @@ public final class World {
     private double y;
     private String place = "";
     private String lastSkill = "";
+    private long shownTime = -1;
+    private String shownSkill;
+    private String shownPlace;
 
     public World(WorldModel model, long seed) {
         this.model = model;
@@ -91,10 +94,23 @@ public final class World {
 
     /** Evaluates an expression of the world now (a fresh {@code random} for it). */
     public Object eval(Expr e) {
-        board.set("time", now / 1000.0);
-        board.set("skill", runs.isEmpty() ? "" : runs.get(runs.size() - 1).name);
-        board.set("place", place);
-        board.set("random", random.nextDouble());
+        // The built-ins are written only when they change: blackboard writes are the cost of a run.
+        if (now != shownTime) {
+            board.set("time", now / 1000.0);
+            shownTime = now;
+        }
+        String skill = skill();
+        if (!skill.equals(shownSkill)) {
+            board.set("skill", skill);
+            shownSkill = skill;
+        }
+        if (!place.equals(shownPlace)) {
+            board.set("place", place);
+            shownPlace = place;
+        }
+        if (e.reads().contains("random")) {
+            board.set("random", random.nextDouble());
+        }
         return e.run(scope);
     }
 
@@ -377,7 +393,8 @@ public final class World {
         }
     }
 
-    private void problem(String message) {
+    /** Records something the world or the tree could not do, once. */
+    void problem(String message) {
         if (!problems.contains(message)) {
             problems.add(message);
         }
