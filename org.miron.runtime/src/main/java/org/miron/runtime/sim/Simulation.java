@@ -74,6 +74,7 @@ public final class Simulation {
     private int failed;
     private int adaptations;
     private String lastSkill = "";
+    private double realTime; // 0: virtual clock; else the wall clock, this many times faster
 
     public Simulation(Setup setup, Policy policy, long seed, long durationMs, long timelineMs) {
         this.setup = setup;
@@ -109,6 +110,16 @@ public final class Simulation {
                 timeline.add(new TimelineEvent(t, Topics.OBSERVATION, observation(o.decl())));
             }
         });
+    }
+
+    /**
+     * Runs on the wall clock instead ({@code speed} times faster than real time): each instant waits
+     * until its time has come and happens at the time the clock then says, late by however long the
+     * machine took. Only to compare with the virtual clock: the same decisions, in the same order.
+     */
+    public Simulation realTime(double speed) {
+        this.realTime = speed;
+        return this;
     }
 
     /** A fresh compilation for each run: patterns and windows keep state. */
@@ -153,6 +164,9 @@ public final class Simulation {
                 now = durationMs;
                 break;
             }
+            if (realTime > 0) {
+                next = Math.min(durationMs, Math.max(next, awaitWallClock(next)));
+            }
             measures.hold(world, (next - now) / 1000.0);
             world.advance(next);
             now = next;
@@ -168,6 +182,27 @@ public final class Simulation {
         out.put("bt:missionsFailed", (double) failed);
         out.put("engine:adaptations", (double) adaptations);
         return new Result(out, List.copyOf(world.problems()), timeline);
+    }
+
+    private long wallStart = -1;
+
+    /** Waits until the wall clock reaches virtual time {@code t}; returns the virtual time it then is. */
+    private long awaitWallClock(long t) {
+        if (wallStart < 0) {
+            wallStart = System.nanoTime();
+        }
+        while (true) {
+            long elapsed = (long) ((System.nanoTime() - wallStart) / 1e6 * realTime);
+            if (elapsed >= t) {
+                return elapsed;
+            }
+            try {
+                Thread.sleep(Math.max(1, (long) ((t - elapsed) / realTime)));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return t;
+            }
+        }
     }
 
     /** The provider's due work and ticks, a decision if an input changed, one tick of the tree. */

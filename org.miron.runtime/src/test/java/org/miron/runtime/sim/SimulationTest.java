@@ -75,7 +75,7 @@ public class SimulationTest {
 
     @Test
     public void theTimelineShowsTheDecisionsSkillsAndMetrics() {
-        Simulation.Result r = new Simulation(setup, Policy.parse("adaptive"), 1, 3_600_000, 3_600_000).run();
+        Simulation.Result r = new Simulation(setup, Policy.parse("adaptive"), 1, 3 * 3_600_000, 3 * 3_600_000).run();
         List<String> topics = r.timeline().stream().map(TimelineEvent::topic).distinct().toList();
         assertTrue(topics.toString(), topics.containsAll(List.of("roqme.estimate", "roqme.context", "roqme.observation", "miron.decision")));
         assertTrue(r.timeline().stream().anyMatch(e -> e.body().path("name").asText().equals("skill")
