@@ -3,10 +3,8 @@ package org.miron.runtime.sim;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -131,12 +129,10 @@ public final class Comparison {
             b.append(String.format(java.util.Locale.ROOT, "  %-28s", r.policy().name()));
         }
         b.append('\n');
-        Map<String, Statistics.Summary> row = new LinkedHashMap<>();
         for (String m : names) {
             b.append(String.format(java.util.Locale.ROOT, "%-" + width + "s", m));
             for (PolicyRuns r : results) {
                 Statistics.Summary s = Statistics.of(values(r, m));
-                row.put(r.policy().name(), s);
                 b.append(String.format(java.util.Locale.ROOT, "  %-28s", fmt(s.mean()) + " [" + fmt(s.lo()) + ", " + fmt(s.hi()) + "]"));
             }
             b.append('\n');
