@@ -134,7 +134,7 @@ public class SimulateCommand implements Callable<Integer> {
             return 1;
         } catch (ModelException | IOException e) {
             return usage("miron simulate: error: " + e.getMessage());
-        } catch (IllegalArgumentException e) {
+        } catch (RuntimeException e) { // a policy naming no varpoint, a tree the executor cannot build
             return usage("miron simulate: error: " + e.getMessage());
         }
         int cores = threads != null ? Math.max(1, threads) : Runtime.getRuntime().availableProcessors();
@@ -142,7 +142,14 @@ public class SimulateCommand implements Callable<Integer> {
                 + duration + " per policy, seed " + seed);
         console.flush();
         long started = System.nanoTime();
-        List<Comparison.PolicyRuns> results = Comparison.run(setup, parsed, runs, seed, durationMs, timelineMs, cores);
+        List<Comparison.PolicyRuns> results;
+        try {
+            results = Comparison.run(setup, parsed, runs, seed, durationMs, timelineMs, cores);
+        } catch (RuntimeException e) { // an expression that cannot run on the values it met (a script error)
+            err.println("miron simulate: error: a run stopped: " + e.getMessage());
+            err.flush();
+            return 1;
+        }
         double wall = (System.nanoTime() - started) / 1e9;
         console.println();
         console.print(Comparison.table(results));

@@ -73,6 +73,7 @@ public final class Simulation {
     private int succeeded;
     private int failed;
     private int adaptations;
+    private int solveFailures;
     private String lastSkill = "";
     private double realTime; // 0: virtual clock; else the wall clock, this many times faster
 
@@ -181,6 +182,7 @@ public final class Simulation {
         out.put("bt:missionsSucceeded", (double) succeeded);
         out.put("bt:missionsFailed", (double) failed);
         out.put("engine:adaptations", (double) adaptations);
+        out.put("engine:solveFailures", (double) solveFailures);
         return new Result(out, List.copyOf(world.problems()), timeline);
     }
 
@@ -235,6 +237,9 @@ public final class Simulation {
             InputState.Snapshot snap = inputs.snapshot();
             seenVersion = snap.version();
             Decider.Outcome o = decider.decide(snap, now);
+            if (!o.result().solved()) {
+                solveFailures++; // the last configuration stays, as in the engine; the run goes on
+            }
             for (Decider.Change c : o.changes()) {
                 apply(c.varpoint(), c.value());
                 adaptations++;
