@@ -25,6 +25,8 @@ public final class JsonSchemaFile {
     public static final JsonSchemaFile IO_JSON = new JsonSchemaFile("docs/io-json.schema.json");
     /** docs/roqme-model.schema.json: the RoQME runtime model's contract with the provider. */
     public static final JsonSchemaFile ROQME_MODEL = new JsonSchemaFile("docs/roqme-model.schema.json");
+    /** docs/world.schema.json: the structure of a world file for `miron simulate`. */
+    public static final JsonSchemaFile WORLD = new JsonSchemaFile("docs/world.schema.json");
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private final String relative;

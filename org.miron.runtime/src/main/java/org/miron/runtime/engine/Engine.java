@@ -1,10 +1,8 @@
 package org.miron.runtime.engine;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
@@ -28,11 +26,7 @@ public final class Engine implements AutoCloseable {
     private final InputState state;
     private final InputDecoder decoder;
     private final EngineStatus status;
-    private final Map<String, Integer> applied = new LinkedHashMap<>(); // solve thread only
-    /** Varpoints a decision has set (solve thread only): from then on the model's tie-break decides. */
-    private final java.util.Set<String> sent = new java.util.HashSet<>();
-    private final RuleActivity activity; // null without a decision section
-    private final DecisionExplainer explainer; // null with activity
+    private final Decider decider; // solve thread only
     private volatile Map<String, Object> appliedValues = Map.of();
     private BusClient bus;
     private ParameterSender sender;
@@ -50,29 +44,8 @@ public final class Engine implements AutoCloseable {
         this.state = new InputState(model);
         this.decoder = new InputDecoder(model, state);
         this.status = new EngineStatus(model.model(), backend.name());
-        this.activity = activity(model);
-        this.explainer = activity == null ? null : new DecisionExplainer(model, activity);
-        Map<String, Object> initial = new LinkedHashMap<>();
-        for (VariationPoint vp : model.varpoints()) {
-            if (vp.initial() != null) { // the robot starts with it: applied before any decision
-                applied.put(vp.name(), vp.initial());
-                initial.put(vp.name(), vp.values().get(vp.initial()));
-            }
-        }
-        appliedValues = initial;
-    }
-
-    /** Rule activity needs the decision section; without it every decision is sent as before. */
-    private static RuleActivity activity(IoModel model) {
-        if (model.decision() == null) {
-            return null;
-        }
-        try {
-            return new RuleActivity(model);
-        } catch (IllegalArgumentException e) {
-            LOG.warning("decision section unusable for explanations: " + e.getMessage());
-            return null;
-        }
+        this.decider = new Decider(model, backend, state, status);
+        appliedValues = decider.applied();
     }
 
     /** The name of the backend that decides (native, minizinc, both). */
@@ -197,124 +170,20 @@ public final class Engine implements AutoCloseable {
     }
 
     private void handle(SolveResult r, InputState.Snapshot snap) {
-        if (r.solved()) {
-            String bad = outOfRange(r);
-            if (bad != null) {
-                r = SolveResult.failed(SolveResult.Status.ERROR, bad, r.millis());
+        Decider.Outcome o = decider.handle(r, snap, System.currentTimeMillis());
+        appliedValues = decider.applied();
+        if (o.result().solved()) {
+            seq = decider.seq();
+            // The state first (above), then the outputs: they leave at once, and whoever sees one may ask.
+            for (Decider.Change c : o.changes()) {
+                send(c.varpoint(), c.value());
             }
-        }
-        status.solveOutcome(r);
-        backend.counters().forEach(status::set);
-        ObjectNode entry = Json.object();
-        entry.put("time", System.currentTimeMillis());
-        entry.put("model", model.model());
-        entry.put("backend", backend.name());
-        entry.put("solveMs", r.millis());
-        entry.put("outcome", r.status().name());
-        entry.set("inputs", inputs(snap.params()));
-        if (r.solved()) {
-            apply(r, snap, entry);
-        } else {
-            entry.put("message", r.message());
-            LOG.warning("solve failed (" + r.status() + "), keeping the last configuration: " + r.message());
+            bus.publishRetained(Topics.DECISION, Topics.DECISION, Json.write(o.entry()));
         }
         if (log != null) {
-            log.append(entry);
+            log.append(o.entry());
         }
         publishStatus();
-    }
-
-    /**
-     * The solve's parameters as logged and published; a boolean varpoint's indices shown as its
-     * values (false/true, null before the first decision), so the 0/1 of the .mzn stays inside.
-     */
-    private ObjectNode inputs(Map<String, Object> params) {
-        ObjectNode inputs = Json.MAPPER.valueToTree(params);
-        for (VariationPoint vp : model.varpoints()) {
-            if (vp.isBoolean()) {
-                for (String param : List.of(vp.inputValue(), vp.current())) {
-                    if (params.get(param) instanceof Integer index) {
-                        inputs.set(param, vp.valueAt(index));
-                    }
-                }
-            }
-        }
-        return inputs;
-    }
-
-    private String outOfRange(SolveResult r) {
-        for (VariationPoint vp : model.varpoints()) {
-            int idx = r.decisions().get(vp.decision());
-            if (idx < 0 || idx >= vp.values().size()) {
-                return vp.decision() + " = " + idx + " is not an index of " + vp.name() + "'s values";
-            }
-        }
-        return null;
-    }
-
-    /**
-     * Applies a decision: sends what changed, except for parameters (varpoints not woven into the
-     * tree as variants, whose preset the executor expects at start-up) no decision has set yet that
-     * nothing asks to change (no impact, no applicable rule, no override): they keep their initial
-     * value, or stay unset ({@code null} in the decision). Once a rule has set one, the model's
-     * tie-break decides when the rule lets go: back to the preset (or the initial value), else the
-     * current value stays.
-     */
-    private void apply(SolveResult r, InputState.Snapshot snap, ObjectNode entry) {
-        seq++;
-        ArrayNode changed = Json.MAPPER.createArrayNode();
-        ArrayNode held = Json.MAPPER.createArrayNode();
-        ObjectNode decisions = Json.object();
-        Map<String, Object> values = new LinkedHashMap<>();
-        RuleActivity.Activity act = activity == null ? null
-                : activity.evaluate(snap.params(), r.decisions(), r.dropped());
-        for (int v = 0; v < model.varpoints().size(); v++) {
-            VariationPoint vp = model.varpoints().get(v);
-            if (act != null && !act.asked()[v] && !sent.contains(vp.name()) && !vp.bindingType().equals("bt")) {
-                held.add(vp.name());
-                Integer kept = applied.get(vp.name());
-                decisions.set(vp.name(), kept == null ? null : vp.values().get(kept));
-                if (kept != null) {
-                    values.put(vp.name(), vp.values().get(kept));
-                }
-                continue;
-            }
-            int idx = r.decisions().get(vp.decision());
-            JsonNode value = vp.values().get(idx);
-            decisions.set(vp.name(), value);
-            values.put(vp.name(), value);
-            Integer before = applied.put(vp.name(), idx);
-            if (before == null || before != idx) {
-                changed.add(vp.name());
-                sent.add(vp.name());
-                state.setCurrent(vp, idx);
-            }
-        }
-        // The state first, then the outputs: they leave at once, and whoever sees one may ask.
-        appliedValues = values;
-        for (JsonNode name : changed) {
-            VariationPoint vp = model.varpoint(name.asText()).orElseThrow();
-            send(vp, (JsonNode) values.get(vp.name()));
-        }
-        entry.put("seq", seq);
-        entry.put("optimal", r.optimal());
-        entry.set("dropped", Json.MAPPER.valueToTree(r.dropped()));
-        entry.set("held", held);
-        if (act != null) {
-            entry.set("applied", explainer.applied(act));
-            ObjectNode why = entry.putObject("why");
-            for (JsonNode name : changed) {
-                VariationPoint vp = model.varpoint(name.asText()).orElseThrow();
-                why.set(vp.name(), explainer.explain(act, model.varpoints().indexOf(vp)));
-            }
-        }
-        if (!r.dropped().isEmpty()) {
-            status.count("droppedRules");
-            LOG.info("rules dropped for higher ones: " + String.join(", ", r.dropped()));
-        }
-        entry.set("decisions", decisions);
-        entry.set("changed", changed);
-        bus.publishRetained(Topics.DECISION, Topics.DECISION, Json.write(entry));
     }
 
     private void send(VariationPoint vp, JsonNode value) {

@@ -1,0 +1,181 @@
+package org.miron.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+
+import org.miron.cli.demo.SimulationReport;
+import org.miron.generator.RoqmeRuntimeModel;
+import org.miron.runtime.Json;
+import org.miron.runtime.engine.IoModel;
+import org.miron.runtime.roqme.model.ModelException;
+import org.miron.runtime.roqme.model.ModelReader;
+import org.miron.runtime.roqme.model.RoqmeModel;
+import org.miron.runtime.sim.Comparison;
+import org.miron.runtime.sim.Durations;
+import org.miron.runtime.sim.Policy;
+import org.miron.runtime.sim.Setup;
+import org.miron.runtime.sim.WorldException;
+import org.miron.runtime.sim.WorldModel;
+import org.miron.runtime.sim.WorldReader;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * `miron simulate`: runs a MIRoN model closed-loop against a world file on a virtual clock, once per
+ * seed and policy, and compares the policies' measures with confidence intervals (docs/simulator.md).
+ */
+@Command(name = "simulate", mixinStandardHelpOptions = true,
+        description = "Simulates a MIRoN model's robot in a world (a JSON file: state, skills' durations and effects, "
+                + "random processes, published contexts, measures) on a virtual clock, without a broker, and compares "
+                + "policies: adaptive (the model), preset (nothing adapts), fixed:vp=value,... Writes OUT/summary.json "
+                + "and OUT/report.html.",
+        exitCodeListHeading = "Exit codes:%n",
+        exitCodeList = { "0:simulated", "1:the model or the world file has errors", "2:usage error" })
+public class SimulateCommand implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "MODEL.miron", description = "the MIRoN model")
+    Path model;
+
+    @Option(names = "--world", required = true, paramLabel = "FILE", description = "the world file (docs/simulator.md)")
+    Path world;
+
+    @Option(names = "--duration", paramLabel = "TIME", defaultValue = "8h",
+            description = "simulated time per run, e.g. 30m, 8h (default: ${DEFAULT-VALUE})")
+    String duration;
+
+    @Option(names = "--runs", paramLabel = "N", defaultValue = "10", description = "runs per policy (default: ${DEFAULT-VALUE})")
+    int runs;
+
+    @Option(names = "--seed", paramLabel = "S", defaultValue = "1",
+            description = "run i of every policy uses seed S+i; the same seed gives the same output (default: ${DEFAULT-VALUE})")
+    long seed;
+
+    @Option(names = "--policy", paramLabel = "POLICY",
+            description = "adaptive, preset or fixed:vp=value,...; repeatable (default: adaptive and preset)")
+    List<String> policies = new ArrayList<>();
+
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "miron-simulate",
+            description = "where summary.json, report.html and the generated model go (default: ${DEFAULT-VALUE})")
+    Path out;
+
+    @Option(names = "--threads", paramLabel = "N", description = "parallel runs (default: the number of cores)")
+    Integer threads;
+
+    @Option(names = "--timeline", paramLabel = "TIME", defaultValue = "30m",
+            description = "how much of the first run of each policy the report's timelines show (default: ${DEFAULT-VALUE})")
+    String timeline;
+
+    @Spec
+    CommandSpec spec;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter console = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        long durationMs;
+        long timelineMs;
+        List<Policy> parsed = new ArrayList<>();
+        try {
+            durationMs = Durations.parseMs(duration);
+            timelineMs = Durations.parseMs(timeline);
+            for (String p : policies.isEmpty() ? List.of("adaptive", "preset") : policies) {
+                parsed.add(Policy.parse(p));
+            }
+        } catch (IllegalArgumentException e) {
+            return usage(e.getMessage());
+        }
+        if (runs < 1 || durationMs <= 0) {
+            return usage("--runs and --duration must be positive");
+        }
+        if (!Files.isRegularFile(model) || !Files.isRegularFile(world)) {
+            return usage((Files.isRegularFile(model) ? world : model) + ": error: no such file");
+        }
+        Path generated = out.resolve("model");
+        String name = model.getFileName().toString().replaceFirst("\\.miron$", "");
+        StringWriter log = new StringWriter();
+        CommandLine generate = MironCli.commandLine();
+        generate.setOut(new PrintWriter(log));
+        generate.setErr(new PrintWriter(log));
+        int status = generate.execute("generate", "-o", generated.toString(), model.toString());
+        if (status != 0) {
+            err.print(log);
+            err.flush();
+            return status;
+        }
+        Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
+        Setup setup;
+        try {
+            IoModel io = IoModel.load(generated.resolve(name + ".io.json"));
+            RoqmeModel roqme = ModelReader.read(generated.resolve(name + RoqmeRuntimeModel.SUFFIX));
+            Path tree = generated.resolve(name + ".ext.xml");
+            WorldModel w = WorldReader.read(world, Setup.env(tree, roqme));
+            setup = new Setup(io, roqme, tree, w);
+            for (Policy p : parsed) {
+                if (!p.adaptive()) {
+                    p.configuration(io); // unknown varpoints and values are refused before anything runs
+                }
+            }
+        } catch (WorldException e) {
+            e.problems().forEach(err::println);
+            err.flush();
+            return 1;
+        } catch (ModelException | IOException e) {
+            return usage("miron simulate: error: " + e.getMessage());
+        } catch (RuntimeException e) { // a policy naming no varpoint, a tree the executor cannot build
+            return usage("miron simulate: error: " + e.getMessage());
+        }
+        int cores = threads != null ? Math.max(1, threads) : Runtime.getRuntime().availableProcessors();
+        console.println("MIRoN simulate: " + model.getFileName() + " in " + world.getFileName() + ", " + runs + " run(s) of "
+                + duration + " per policy, seed " + seed);
+        console.flush();
+        long started = System.nanoTime();
+        List<Comparison.PolicyRuns> results;
+        try {
+            results = Comparison.run(setup, parsed, runs, seed, durationMs, timelineMs, cores);
+        } catch (RuntimeException e) { // an expression that cannot run on the values it met (a script error)
+            err.println("miron simulate: error: a run stopped: " + e.getMessage());
+            err.flush();
+            return 1;
+        }
+        double wall = (System.nanoTime() - started) / 1e9;
+        console.println();
+        console.print(Comparison.table(results));
+        console.println();
+        console.println("(mean [95 % confidence interval] over " + runs + " run(s); metric:* are the RoQME estimates' time averages)");
+        for (String problem : Comparison.problems(results)) {
+            console.println("world: " + problem);
+        }
+        Files.createDirectories(out);
+        Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
+                .writeValueAsString(Comparison.summary(results, runs, seed, durationMs)) + "\n", StandardCharsets.UTF_8);
+        new SimulationReport(model.getFileName() + " in " + world.getFileName(), results, setup.world(), timelineMs)
+                .write(out.resolve("report.html"));
+        console.println("  summary: " + out.resolve("summary.json"));
+        console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
+        console.flush();
+        double simulated = durationMs / 1000.0 * runs * parsed.size();
+        err.printf(java.util.Locale.ROOT, "miron simulate: %.0f s simulated in %.1f s on %d thread(s) (%.0fx real time)%n",
+                simulated, wall, cores, simulated / Math.max(wall, 1e-9));
+        err.flush();
+        return 0;
+    }
+
+    private int usage(String message) {
+        spec.commandLine().getErr().println(message);
+        spec.commandLine().getErr().flush();
+        return 2;
+    }
+}

@@ -1,0 +1,93 @@
+package org.miron.cli;
+
+import static org.junit.Assert.assertArrayEquals;
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.miron.runtime.Json;
+
+/**
+ * `miron simulate` on the intralogistics example and its world: the same seed writes the same
+ * bytes, in this JVM and in another one (nothing depends on hashing, threads or the wall clock);
+ * the summary has every policy's measures with intervals; a bad world is refused before anything runs.
+ */
+public class SimulateCommandTest {
+    private static final Path MODEL = Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron");
+    private static final Path WORLD = Cli.ROOT.resolve("examples/intralogistics/world.json");
+
+    @Rule
+    public TemporaryFolder tmp = new TemporaryFolder();
+
+    private static String[] args(Path out, String seed) {
+        return new String[] { "simulate", MODEL.toString(), "--world", WORLD.toString(), "--duration", "20m", "--runs", "3",
+            "--seed", seed, "--policy", "adaptive", "--policy", "preset", "--policy", "fixed:maxVelocity=10", "--out", out.toString(),
+            "--timeline", "5m" };
+    }
+
+    @Test
+    public void theSameSeedWritesTheSameBytesInAnyJvm() throws Exception {
+        Path a = tmp.getRoot().toPath().resolve("a");
+        Path b = tmp.getRoot().toPath().resolve("b");
+        Cli first = new Cli();
+        assertEquals(first.err.toString(), 0, first.run(args(a, "5")));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), MironCli.class.getName()));
+        command.addAll(List.of(args(b, "5")));
+        Process other = new ProcessBuilder(command).redirectErrorStream(true)
+                .redirectOutput(tmp.getRoot().toPath().resolve("other.log").toFile()).start();
+        other.getOutputStream().close();
+        assertTrue("the second JVM did not finish in 10 minutes", other.waitFor(10, TimeUnit.MINUTES));
+        assertEquals(Files.readString(tmp.getRoot().toPath().resolve("other.log")), 0, other.exitValue());
+        for (String file : List.of("summary.json", "report.html")) {
+            assertArrayEquals(file, Files.readAllBytes(a.resolve(file)), Files.readAllBytes(b.resolve(file)));
+        }
+        JsonNode summary = Json.MAPPER.readTree(a.resolve("summary.json").toFile());
+        for (String policy : List.of("adaptive", "preset", "fixed:maxVelocity=10")) {
+            JsonNode deliveries = summary.path("policies").path(policy).path("deliveries");
+            assertEquals(policy + ": " + deliveries, 3, deliveries.path("runs").size());
+            double mean = deliveries.path("mean").asDouble();
+            assertTrue(deliveries.toString(), deliveries.path("ci95").get(0).asDouble() <= mean && mean <= deliveries.path("ci95").get(1).asDouble());
+            assertTrue(summary.path("policies").path(policy).has("metric:safety"));
+        }
+        String report = Files.readString(a.resolve("report.html"));
+        assertTrue(report.contains("<h2>Policy adaptive: the first 5 min of run 1</h2>"));
+        assertTrue("the bar charts show every measure", report.contains(">near_misses</text>") || report.contains(">near_misses ("));
+        assertTrue(first.out().contains("fast_near_person"));
+        Cli other5 = new Cli();
+        other5.run(args(tmp.getRoot().toPath().resolve("c"), "6"));
+        assertFalse("another seed, another summary", Files.readString(tmp.getRoot().toPath().resolve("c/summary.json"))
+                .equals(Files.readString(a.resolve("summary.json"))));
+    }
+
+    @Test
+    public void aBadWorldIsRefusedWithItsPositions() throws Exception {
+        String bad = Files.readString(WORLD).replace("\"FreeSpace\": { \"value\": \"freeSpace\" }",
+                "\"FreeSpace\": { \"value\": \"freeSpace == 'HIHG'\" }");
+        Path world = Cli.write(tmp.getRoot().toPath(), "bad/world.json", bad);
+        Path out = tmp.getRoot().toPath().resolve("out");
+        Cli cli = new Cli();
+        assertEquals(1, cli.run("simulate", MODEL.toString(), "--world", world.toString(), "--out", out.toString()));
+        assertTrue(cli.err.toString(), cli.err.toString().matches("(?s).*world\\.json:\\d+:\\d+: error \\[world\\.type\\]: .*'HIHG'.*"
+                + "\\(at /contexts/FreeSpace/value\\).*"));
+        assertFalse("nothing simulated", Files.exists(out.resolve("summary.json")));
+    }
+
+    @Test
+    public void aPolicyNamingNoVarpointIsAUsageError() {
+        Cli cli = new Cli();
+        assertEquals(2, cli.run("simulate", MODEL.toString(), "--world", WORLD.toString(), "--policy", "fixed:speed=10",
+                "--out", tmp.getRoot().toString()));
+        assertTrue(cli.err.toString(), cli.err.toString().contains("no varpoint 'speed'"));
+        assertEquals(2, new Cli().run("simulate", MODEL.toString(), "--world", WORLD.toString(), "--policy", "fast"));
+    }
+}

@@ -1,0 +1,378 @@
+package org.miron.runtime.sim;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.BooleanNode;
+import com.fasterxml.jackson.databind.node.DoubleNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import com.fasterxml.jackson.databind.node.TextNode;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import org.miron.executor.NodeStatus;
+import org.miron.executor.Tree;
+import org.miron.executor.TreeContext;
+import org.miron.executor.scripting.ScriptValues;
+import org.miron.executor.skills.SkillActionStrategy;
+import org.miron.executor.skills.VariantSource;
+import org.miron.runtime.Json;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.engine.Decider;
+import org.miron.runtime.engine.EngineStatus;
+import org.miron.runtime.engine.InputSpec;
+import org.miron.runtime.engine.InputState;
+import org.miron.runtime.engine.NativeBackend;
+import org.miron.runtime.engine.VariationPoint;
+import org.miron.runtime.roqme.Provider;
+import org.miron.runtime.roqme.expr.CompiledModel;
+import org.miron.runtime.roqme.expr.Compiler;
+import org.miron.runtime.roqme.expr.Literals;
+import org.miron.runtime.roqme.model.RoqmeModel;
+import org.miron.runtime.sim.WorldModel.Publication;
+
+/**
+ * One simulated run, broker-less on a virtual clock: the world, the RoQME provider, the engine's
+ * decisions (native backend) and the behaviour tree share one time, which jumps to the next thing
+ * that happens (a skill ends, a process occurs, a context is due, the provider ticks); nothing
+ * sleeps. At each instant, in order: the world's skills and processes, the contexts it publishes,
+ * the provider's tick, a decision if an input changed, one tick of the tree. A finished mission
+ * starts again after the world's restart delay.
+ */
+public final class Simulation {
+    /** What a run measured; {@code timeline}: what it recorded for the report (empty unless asked). */
+    public record Result(Map<String, Double> measures, List<String> problems, List<TimelineEvent> timeline) {
+    }
+
+    private static final int MAX_STEPS_PER_INSTANT = 1000;
+
+    private final Setup setup;
+    private final Policy policy;
+    private final long durationMs;
+    private final long timelineMs;
+    private final World world;
+    private final CompiledModel roqme;
+    private final Provider provider;
+    private final InputState inputs;
+    private final Decider decider;
+    private final VariantSource variants = new VariantSource();
+    private final VariantSource blackboard = new VariantSource();
+    private final Tree tree;
+    private final Measures measures;
+    private final Map<String, InputSpec> engineContexts = new HashMap<>();
+    private final Map<String, InputSpec> engineMetrics = new HashMap<>();
+    private final Map<String, RoqmeModel.Variable> contexts = new HashMap<>();
+    private final Object[] lastPublished;
+    private final long[] nextPublish;
+    private final List<TimelineEvent> timeline = new ArrayList<>();
+    private final double[] lastEstimates;
+    private long now;
+    private long seenVersion = -1;
+    private long restartAt = -1;
+    private int succeeded;
+    private int failed;
+    private int adaptations;
+    private int solveFailures;
+    private String lastSkill = "";
+    private double realTime; // 0: virtual clock; else the wall clock, this many times faster
+
+    public Simulation(Setup setup, Policy policy, long seed, long durationMs, long timelineMs) {
+        this.setup = setup;
+        this.policy = policy;
+        this.durationMs = durationMs;
+        this.timelineMs = timelineMs;
+        this.world = new World(setup.world(), seed);
+        this.roqme = compile(setup.roqme());
+        this.provider = new Provider(roqme, 1000, 0);
+        this.inputs = new InputState(setup.io());
+        this.decider = policy.adaptive()
+                ? new Decider(setup.io(), new NativeBackend(setup.io()), inputs, new EngineStatus(setup.io().model(), "native"))
+                : null;
+        TreeContext context = new TreeContext(() -> now);
+        context.onProblem(world::problem); // e.g. a skill not pushed for a port nothing wrote: said once in the results
+        this.tree = Setup.buildTree(setup.tree(), context, variants, new SkillActionStrategy(world::push));
+        tree.feedBlackboardFrom(blackboard);
+        for (InputSpec in : setup.io().inputs()) {
+            (in.isMetric() ? engineMetrics : engineContexts).put(in.name(), in);
+        }
+        for (RoqmeModel.Variable v : setup.roqme().contexts()) {
+            contexts.put(v.name(), v);
+        }
+        List<String> properties = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
+                .map(RoqmeModel.Belief::name).toList();
+        lastEstimates = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
+                .mapToDouble(RoqmeModel.Belief::ref).toArray();
+        measures = new Measures(setup.world().measures(), properties, lastEstimates);
+        lastPublished = new Object[setup.world().publications().size()];
+        nextPublish = new long[lastPublished.length];
+        provider.onFire((o, t) -> {
+            if (t <= timelineMs) {
+                timeline.add(new TimelineEvent(t, Topics.OBSERVATION, observation(o.decl())));
+            }
+        });
+    }
+
+    /**
+     * Runs on the wall clock instead ({@code speed} times faster than real time): each instant waits
+     * until its time has come and happens at the time the clock then says, late by however long the
+     * machine took. Only to compare with the virtual clock: the same decisions, in the same order.
+     */
+    public Simulation realTime(double speed) {
+        this.realTime = speed;
+        return this;
+    }
+
+    /** A fresh compilation for each run: patterns and windows keep state. */
+    private static CompiledModel compile(RoqmeModel model) {
+        try {
+            return Compiler.compile(model, new LinkedHashMap<>());
+        } catch (org.miron.runtime.roqme.model.ModelException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+    }
+
+    /** Runs the whole duration and returns what it measured. */
+    public Result run() {
+        provider.start();
+        world.start(0);
+        publishAll(true);
+        if (decider == null) {
+            policy.configuration(setup.io()).forEach((vp, index) -> apply(vp, vp.values().get(index)));
+        }
+        instant();
+        int sameInstant = 0;
+        while (true) {
+            long next = Math.min(world.nextEvent(), Math.min(provider.nextTickTime(), provider.nextDue()));
+            for (long p : nextPublish) {
+                next = Math.min(next, p);
+            }
+            if (restartAt >= 0) {
+                next = Math.min(next, restartAt);
+            }
+            if (next <= now) {
+                if (++sameInstant > MAX_STEPS_PER_INSTANT) {
+                    next = now + 1; // something re-arms itself at once: let time go on
+                    sameInstant = 0;
+                }
+            } else {
+                sameInstant = 0;
+            }
+            next = Math.max(next, now);
+            if (next > durationMs) {
+                measures.hold(world, (durationMs - now) / 1000.0);
+                world.advance(durationMs);
+                now = durationMs;
+                break;
+            }
+            if (realTime > 0) {
+                next = Math.min(durationMs, Math.max(next, awaitWallClock(next)));
+            }
+            measures.hold(world, (next - now) / 1000.0);
+            world.advance(next);
+            now = next;
+            world.fire();
+            List<String> events = world.takeEvents();
+            events.forEach(this::publishEvent);
+            measures.instant(world, events);
+            publishAll(false);
+            instant();
+        }
+        Map<String, Double> out = measures.finish(world, durationMs / 1000.0);
+        out.put("bt:missionsSucceeded", (double) succeeded);
+        out.put("bt:missionsFailed", (double) failed);
+        out.put("engine:adaptations", (double) adaptations);
+        out.put("engine:solveFailures", (double) solveFailures);
+        return new Result(out, List.copyOf(world.problems()), timeline);
+    }
+
+    private long wallStart = -1;
+
+    /** Waits until the wall clock reaches virtual time {@code t}; returns the virtual time it then is. */
+    private long awaitWallClock(long t) {
+        if (wallStart < 0) {
+            wallStart = System.nanoTime();
+        }
+        while (true) {
+            long elapsed = (long) ((System.nanoTime() - wallStart) / 1e6 * realTime);
+            if (elapsed >= t) {
+                return elapsed;
+            }
+            try {
+                Thread.sleep(Math.max(1, (long) ((t - elapsed) / realTime)));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return t;
+            }
+        }
+    }
+
+    /** The provider's due work and ticks, a decision if an input changed, one tick of the tree. */
+    private void instant() {
+        provider.advanceTo(now);
+        while (provider.nextTickTime() <= now) {
+            Provider.Tick t = provider.tick();
+            double[] est = t.estimates();
+            measures.estimates(est);
+            int i = 0;
+            for (RoqmeModel.Belief b : setup.roqme().beliefs()) {
+                if (!b.isProperty()) {
+                    continue;
+                }
+                InputSpec in = engineMetrics.get(b.name());
+                if (in != null) {
+                    inputs.setMetric(in, est[i]);
+                }
+                if (t.timeMs() <= timelineMs && Math.abs(est[i] - lastEstimates[i]) > 1e-4) {
+                    ObjectNode o = Json.object();
+                    o.put("name", b.name());
+                    o.put("value", est[i]);
+                    timeline.add(new TimelineEvent(t.timeMs(), Topics.ESTIMATE, o));
+                    lastEstimates[i] = est[i];
+                }
+                i++;
+            }
+        }
+        if (decider != null && inputs.version() != seenVersion) {
+            InputState.Snapshot snap = inputs.snapshot();
+            seenVersion = snap.version();
+            Decider.Outcome o = decider.decide(snap, now);
+            if (!o.result().solved()) {
+                solveFailures++; // the last configuration stays, as in the engine; the run goes on
+            }
+            for (Decider.Change c : o.changes()) {
+                apply(c.varpoint(), c.value());
+                adaptations++;
+            }
+            if (now <= timelineMs && (!o.changes().isEmpty() || !o.result().solved())) {
+                o.entry().remove("solveMs"); // wall-clock time: the report stays the same for the same seed
+                timeline.add(new TimelineEvent(now, Topics.DECISION, o.entry()));
+            }
+        }
+        if (restartAt >= 0 && now < restartAt) {
+            return;
+        }
+        restartAt = -1;
+        NodeStatus status = tree.tickRoot();
+        if (status == NodeStatus.SUCCESS) {
+            succeeded++;
+        } else if (status == NodeStatus.FAILURE) {
+            failed++;
+        }
+        if (status.isCompleted()) {
+            restartAt = now + setup.world().restartDelayMs();
+        }
+        recordSkill();
+    }
+
+    private void recordSkill() {
+        String skill = world.skill();
+        if (!skill.equals(lastSkill) && now <= timelineMs) {
+            ObjectNode o = Json.object();
+            o.put("name", "skill");
+            o.put("type", "enum");
+            o.put("value", skill.isEmpty() ? "-" : skill);
+            timeline.add(new TimelineEvent(now, Topics.CONTEXT, o));
+        }
+        lastSkill = skill;
+    }
+
+    /** A decision reaches the robot: a behaviour variant, a blackboard value or a component parameter. */
+    private void apply(VariationPoint vp, JsonNode value) {
+        switch (vp.bindingType()) {
+            case "bt" -> variants.publish(vp.name(), value.asText());
+            case "btport" -> blackboard.publish(vp.name(), value.isNumber() ? (Object) value.asDouble()
+                    : value.isBoolean() ? (Object) value.asBoolean() : value.asText());
+            case "arch" -> world.setParameter(vp.binding().text("parameter"), value.isBoolean() ? (Object) value.asBoolean() : (Object) value.asDouble());
+            default -> {
+            }
+        }
+    }
+
+    /** Periodic contexts that are due, and those published on change whose value changed ({@code all}: every one). */
+    private void publishAll(boolean all) {
+        List<Publication> pubs = setup.world().publications();
+        for (int i = 0; i < pubs.size(); i++) {
+            Publication p = pubs.get(i);
+            if (p.value() == null) {
+                nextPublish[i] = Long.MAX_VALUE; // an event: published when it occurs
+                continue;
+            }
+            boolean due = all || (p.everyMs() != null && nextPublish[i] <= now);
+            Object v = due || p.everyMs() == null ? value(p) : null;
+            if (due || (p.everyMs() == null && !Objects.equals(v, lastPublished[i]))) {
+                publish(p, v, !Objects.equals(v, lastPublished[i]));
+                lastPublished[i] = v;
+            }
+            if (p.everyMs() != null) {
+                nextPublish[i] = due ? now + p.everyMs() : nextPublish[i];
+            } else {
+                nextPublish[i] = Long.MAX_VALUE;
+            }
+        }
+    }
+
+    private Object value(Publication p) {
+        Object raw = world.eval(p.value());
+        return switch (p.type().kind()) {
+            case "boolean" -> ScriptValues.toBoolean(raw);
+            case "enum" -> String.valueOf(raw);
+            default -> ScriptValues.toDouble(raw);
+        };
+    }
+
+    private void publishEvent(String event) {
+        for (Publication p : setup.world().publications()) {
+            if (event.equals(p.event())) {
+                publish(p, Boolean.TRUE, true);
+            }
+        }
+    }
+
+    /** A context sample to the provider and, when the engine reads it, to the engine. */
+    private void publish(Publication p, Object value, boolean changed) {
+        JsonNode json = value instanceof Boolean b ? BooleanNode.valueOf(b)
+                : value instanceof Double d ? DoubleNode.valueOf(d) : TextNode.valueOf(String.valueOf(value));
+        RoqmeModel.Variable v = contexts.get(p.context());
+        Object decoded = Literals.fromMessage(json, v.type());
+        if (decoded != null) {
+            provider.input(roqme.symbols().get(v.id()).slot(), decoded, now);
+        }
+        InputSpec in = engineContexts.get(p.context());
+        if (in != null) {
+            switch (in.roqmeType()) {
+                case "number" -> inputs.setContext(in, in.type().equals("int") ? (Object) (int) Math.round(json.asDouble()) : (Object) json.asDouble());
+                case "boolean" -> inputs.setContext(in, json.asBoolean());
+                case "enum" -> inputs.setContext(in, Math.max(0, in.literals().indexOf(json.asText())));
+                default -> inputs.setContext(in, Boolean.TRUE);
+            }
+        }
+        if (changed && now <= timelineMs) {
+            ObjectNode o = Json.object();
+            o.put("name", p.context());
+            o.put("type", p.event() != null ? "event" : p.type().kind());
+            o.set("value", json);
+            timeline.add(new TimelineEvent(now, Topics.CONTEXT, o));
+        }
+    }
+
+    private static ObjectNode observation(RoqmeModel.Observation decl) {
+        ObjectNode o = Json.object();
+        o.put("name", decl.name());
+        var actions = o.putArray("actions");
+        for (RoqmeModel.Action a : decl.actions()) {
+            ObjectNode x = actions.addObject();
+            x.put("kind", a.kind());
+            switch (a.kind()) {
+                case "reinforces", "undermines" -> {
+                    x.put("belief", a.belief());
+                    x.put("strength", a.strength() == null ? "MEDIUM" : a.strength());
+                }
+                case "clears" -> x.put("belief", a.belief());
+                case "sets" -> x.put("var", a.var());
+                default -> x.put("timer", a.timer());
+            }
+        }
+        return o;
+    }
+}
