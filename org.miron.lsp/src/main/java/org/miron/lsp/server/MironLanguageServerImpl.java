@@ -1,6 +1,7 @@
 package org.miron.lsp.server;
 
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 
 import org.eclipse.lsp4j.ClientCapabilities;
@@ -19,6 +20,8 @@ import org.eclipse.lsp4j.Location;
 import org.eclipse.lsp4j.ReferenceParams;
 import org.eclipse.lsp4j.ServerCapabilities;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
+import org.eclipse.lsp4j.jsonrpc.json.JsonRpcMethod;
+import org.eclipse.lsp4j.jsonrpc.services.ServiceEndpoints;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
@@ -35,6 +38,7 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
+        StartupLog.mark("initialize received");
         if (params.getCapabilities() == null) {
             params.setCapabilities(new ClientCapabilities());
         }
@@ -53,7 +57,10 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
             }
             workspace.setWorkspaceFolders(true);
         }
-        return super.initialize(params);
+        return super.initialize(params).thenApply(result -> {
+            StartupLog.mark("initialize answered (workspace built)");
+            return result;
+        });
     }
 
     // A position outside the document (a client racing an edit, or a buggy one) gets an empty
@@ -104,6 +111,17 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         } catch (IndexOutOfBoundsException outside) {
             return List.of();
         }
+    }
+
+    /**
+     * The server's own JSON-RPC methods. Xtext adds those of each language's ILanguageServerExtension,
+     * which none of the three binds; asking the languages for them here would make LSP4J's launcher,
+     * which wants the methods before it starts listening, wait for their set-up (MironLanguages
+     * sets them up on their own thread while the server starts: docs/lsp.md, Start-up).
+     */
+    @Override
+    public Map<String, JsonRpcMethod> supportedMethods() {
+        return ServiceEndpoints.getSupportedMethods(getClass());
     }
 
     // Completion also starts where the three languages want it: '<' and '"' in BT, '::' in MIRoN.

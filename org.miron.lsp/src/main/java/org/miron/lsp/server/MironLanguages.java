@@ -1,5 +1,7 @@
 package org.miron.lsp.server;
 
+import java.util.concurrent.CompletableFuture;
+
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.Constants;
 import org.eclipse.xtext.ide.server.commands.IExecutableCommandService;
@@ -31,18 +33,57 @@ import com.google.inject.name.Names;
 public class MironLanguages implements Provider<IResourceServiceProvider.Registry> {
     private IResourceServiceProvider.Registry registry;
 
+    /** Languages being set up ahead of the next server's injector (see {@link #setUpAhead()}). */
+    private static CompletableFuture<IResourceServiceProvider.Registry> ahead;
+
+    /**
+     * The registry at once, the languages being set up on their own thread (docs/lsp.md, Start-up),
+     * so that their set-up overlaps with the rest of the server's start until the client's
+     * `initialize` needs them.
+     */
     @Override
     public synchronized IResourceServiceProvider.Registry get() {
         if (registry == null) {
-            registry = create();
+            registry = new PendingRegistry(takeAhead());
         }
         return registry;
     }
 
+    /** Starts setting up the languages for the next server, before its injector is even created. */
+    static synchronized void setUpAhead() {
+        if (ahead == null) {
+            ahead = setUpOnItsOwnThread();
+        }
+    }
+
+    private static synchronized CompletableFuture<IResourceServiceProvider.Registry> takeAhead() {
+        CompletableFuture<IResourceServiceProvider.Registry> languages = ahead != null ? ahead : setUpOnItsOwnThread();
+        ahead = null;
+        return languages;
+    }
+
+    private static CompletableFuture<IResourceServiceProvider.Registry> setUpOnItsOwnThread() {
+        CompletableFuture<IResourceServiceProvider.Registry> languages = new CompletableFuture<>();
+        Thread setUp = new Thread(() -> {
+            try {
+                languages.complete(create());
+            } catch (Throwable e) {
+                languages.completeExceptionally(e);
+            }
+        }, "miron-lsp-languages");
+        setUp.setDaemon(true);
+        setUp.start();
+        return languages;
+    }
+
     private static IResourceServiceProvider.Registry create() {
+        StartupLog.mark("setting up the languages");
         Injector miron = new MironServerSetup().createInjectorAndDoEMFRegistration();
+        StartupLog.mark("MIRoN set up (with its imports' runtime set-ups)");
         Injector roqme = new RoqmeIdeSetup().createInjectorAndDoEMFRegistration();
+        StartupLog.mark("RoQME set up");
         Injector bt = new BtServerSetup().createInjectorAndDoEMFRegistration();
+        StartupLog.mark("BT set up");
         // Woven trees (name.ext.xml) and other BehaviorTree.CPP XML files are BT files (LanguageRegistry).
         IResourceServiceProvider btServices = bt.getInstance(IResourceServiceProvider.class);
         IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().put("xml", btServices);
