@@ -9,9 +9,11 @@ import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceFactory;
 import org.eclipse.xtext.util.Modules2;
 import org.miron.bt.BtRuntimeModule;
+import org.miron.bt.BtStandaloneSetup;
 import org.miron.bt.ide.BtIdeModule;
 import org.miron.bt.ide.BtIdeSetup;
 import org.miron.dsl.MironRuntimeModule;
+import org.miron.dsl.RoqmeStandaloneSetup;
 import org.miron.dsl.ide.MironIdeModule;
 import org.miron.dsl.ide.MironIdeSetup;
 import org.miron.dsl.ide.RoqmeIdeSetup;
@@ -24,10 +26,9 @@ import com.google.inject.name.Names;
 
 /**
  * The languages the server knows, by file extension: .bt and BehaviorTree.CPP .xml trees (see
- * {@link LanguageRegistry}), .roqme and .miron. Set up in this order because each standalone
- * set-up also registers the languages it imports with their runtime-only injectors: the ide
- * injectors must be the last ones in EMF's global registries, which the server's resource sets
- * use to load imported files.
+ * {@link LanguageRegistry}), .roqme and .miron. Each standalone set-up also registers the
+ * languages it imports; the ide injectors must be the last ones in EMF's global registries, which
+ * the server's resource sets use to load imported files.
  */
 @Singleton
 public class MironLanguages implements Provider<IResourceServiceProvider.Registry> {
@@ -53,6 +54,7 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
     static synchronized void setUpAhead() {
         if (ahead == null) {
             ahead = setUpOnItsOwnThread();
+            ParserWarmUp.start();
         }
     }
 
@@ -78,12 +80,22 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
 
     private static IResourceServiceProvider.Registry create() {
         StartupLog.mark("setting up the languages");
-        Injector miron = new MironServerSetup().createInjectorAndDoEMFRegistration();
-        StartupLog.mark("MIRoN set up (with its imports' runtime set-ups)");
-        Injector roqme = new RoqmeIdeSetup().createInjectorAndDoEMFRegistration();
-        StartupLog.mark("RoQME set up");
-        Injector bt = new BtServerSetup().createInjectorAndDoEMFRegistration();
+        // BT first, then RoQME, then MIRoN, each set-up adopting the injectors of the languages it
+        // imports instead of creating runtime-only ones of its own (one injector per language).
+        BtServerSetup btSetup = new BtServerSetup();
+        Injector bt = btSetup.createInjectorAndDoEMFRegistration();
+        BtStandaloneSetup.adopt(bt);
         StartupLog.mark("BT set up");
+        RoqmeIdeSetup roqmeSetup = new RoqmeIdeSetup();
+        Injector roqme = roqmeSetup.createInjectorAndDoEMFRegistration();
+        RoqmeStandaloneSetup.adopt(roqme);
+        StartupLog.mark("RoQME set up");
+        Injector miron = new MironServerSetup().createInjectorAndDoEMFRegistration();
+        StartupLog.mark("MIRoN set up");
+        // The ide injectors registered last, over any runtime-only one that an earlier set-up in this
+        // process (a test's) made and the MIRoN set-up registered again.
+        roqmeSetup.register(roqme);
+        btSetup.register(bt);
         // Woven trees (name.ext.xml) and other BehaviorTree.CPP XML files are BT files (LanguageRegistry).
         IResourceServiceProvider btServices = bt.getInstance(IResourceServiceProvider.class);
         IResourceServiceProvider.Registry.INSTANCE.getExtensionToFactoryMap().put("xml", btServices);
