@@ -4,6 +4,7 @@ import java.util.concurrent.CompletableFuture;
 
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.xtext.Constants;
+import org.eclipse.xtext.generator.IShouldGenerate;
 import org.eclipse.xtext.ide.server.commands.IExecutableCommandService;
 import org.eclipse.xtext.resource.IResourceServiceProvider;
 import org.eclipse.xtext.resource.XtextResourceFactory;
@@ -13,9 +14,11 @@ import org.miron.bt.BtStandaloneSetup;
 import org.miron.bt.ide.BtIdeModule;
 import org.miron.bt.ide.BtIdeSetup;
 import org.miron.dsl.MironRuntimeModule;
+import org.miron.dsl.RoqmeRuntimeModule;
 import org.miron.dsl.RoqmeStandaloneSetup;
 import org.miron.dsl.ide.MironIdeModule;
 import org.miron.dsl.ide.MironIdeSetup;
+import org.miron.dsl.ide.RoqmeIdeModule;
 import org.miron.dsl.ide.RoqmeIdeSetup;
 
 import com.google.inject.Guice;
@@ -86,7 +89,7 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
         Injector bt = btSetup.createInjectorAndDoEMFRegistration();
         BtStandaloneSetup.adopt(bt);
         StartupLog.mark("BT set up");
-        RoqmeIdeSetup roqmeSetup = new RoqmeIdeSetup();
+        RoqmeIdeSetup roqmeSetup = new RoqmeServerSetup();
         Injector roqme = roqmeSetup.createInjectorAndDoEMFRegistration();
         RoqmeStandaloneSetup.adopt(roqme);
         StartupLog.mark("RoQME set up");
@@ -121,7 +124,17 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
             return Guice.createInjector(Modules2.mixin(new BtRuntimeModule(), new BtIdeModule(),
                     binder -> binder.bind(String.class).annotatedWith(Names.named(Constants.FILE_EXTENSIONS))
                             .toInstance("bt,xml"),
-                    binder -> binder.bind(IExecutableCommandService.class).to(ConvertCommandService.class)));
+                    binder -> binder.bind(IExecutableCommandService.class).to(ConvertCommandService.class),
+                    binder -> binder.bind(IShouldGenerate.class).to(NothingToGenerate.class)));
+        }
+    }
+
+    /** RoQME's ide set-up with the server's builder bindings. */
+    private static final class RoqmeServerSetup extends RoqmeIdeSetup {
+        @Override
+        public Injector createInjector() {
+            return Guice.createInjector(Modules2.mixin(new RoqmeRuntimeModule(), new RoqmeIdeModule(),
+                    binder -> binder.bind(IShouldGenerate.class).to(NothingToGenerate.class)));
         }
     }
 
@@ -130,7 +143,7 @@ public class MironLanguages implements Provider<IResourceServiceProvider.Registr
         @Override
         public Injector createInjector() {
             return Guice.createInjector(Modules2.mixin(new MironRuntimeModule(), new MironIdeModule(),
-                    new MironServerServices()));
+                    new MironServerServices(), binder -> binder.bind(IShouldGenerate.class).to(NothingToGenerate.class)));
         }
     }
 }
