@@ -26,6 +26,17 @@ public class BtStandaloneSetup extends BtStandaloneSetupGenerated {
         return injector;
     }
 
+    /**
+     * Makes an injector already created for BT with more bindings (the language server's, with the
+     * ide services) the one of this process, unless there is one: the set-ups of the languages that
+     * import BT then register it instead of creating a second injector (docs/lsp.md, Start-up).
+     */
+    public static synchronized void adopt(Injector withMoreBindings) {
+        if (injector == null) {
+            injector = withMoreBindings;
+        }
+    }
+
     @Override
     public Injector createInjectorAndDoEMFRegistration() {
         // The grammar imports bt.ecore instead of generating it, so the generated set-up does not

@@ -23,6 +23,17 @@ public class RoqmeStandaloneSetup extends RoqmeStandaloneSetupGenerated {
         return injector;
     }
 
+    /**
+     * Makes an injector already created for RoQME with more bindings (the language server's, with the
+     * ide services) the one of this process, unless there is one: the set-ups of the languages that
+     * import RoQME then register it instead of creating a second injector (docs/lsp.md, Start-up).
+     */
+    public static synchronized void adopt(Injector withMoreBindings) {
+        if (injector == null) {
+            injector = withMoreBindings;
+        }
+    }
+
     @Override
     public Injector createInjectorAndDoEMFRegistration() {
         // The grammar imports roqme.ecore instead of generating it, so the generated set-up does

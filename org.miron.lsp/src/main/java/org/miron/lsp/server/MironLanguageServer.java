@@ -27,11 +27,14 @@ public final class MironLanguageServer {
 
     /** Serves one client on the given streams; the future ends when the input closes. */
     public static Future<Void> serve(InputStream in, OutputStream out, boolean exitProcess) {
+        StartupLog.mark("server starting");
+        MironLanguages.setUpAhead(); // while Guice creates the server's injector
         DisconnectLogFilter.install();
         LanguageServerImpl server = Guice.createInjector(MironServerModule.create(exitProcess))
                 .getInstance(LanguageServerImpl.class);
         Launcher<LanguageClient> launcher = Launcher.createLauncher(server, LanguageClient.class, in, out);
-        server.connect(launcher.getRemoteProxy());
+        server.connect(StartupLog.watch(launcher.getRemoteProxy()));
+        StartupLog.mark("server listening");
         return launcher.startListening();
     }
 

@@ -1,6 +1,7 @@
 package org.miron.lsp.server;
 
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 
 import org.eclipse.lsp4j.ClientCapabilities;
@@ -24,6 +25,8 @@ import org.eclipse.lsp4j.RenameParams;
 import org.eclipse.lsp4j.WorkspaceEdit;
 import org.eclipse.lsp4j.ServerCapabilities;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
+import org.eclipse.lsp4j.jsonrpc.json.JsonRpcMethod;
+import org.eclipse.lsp4j.jsonrpc.services.ServiceEndpoints;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.UriExtensions;
@@ -45,6 +48,7 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
+        StartupLog.mark("initialize received");
         if (params.getCapabilities() == null) {
             params.setCapabilities(new ClientCapabilities());
         }
@@ -63,7 +67,10 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
         params.setRootPath(null);
         workspace.setWorkspaceFolders(true);
         fileChanges.initialize(workspace.getDidChangeWatchedFiles(), folders.folders());
-        return super.initialize(params);
+        return super.initialize(params).thenApply(result -> {
+            StartupLog.mark("initialize answered (workspace built)");
+            return result;
+        });
     }
 
     @Override
@@ -155,6 +162,17 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     protected WorkspaceEdit rename(RenameParams params, CancelIndicator cancelIndicator) {
         return NoOpEdits.drop(super.rename(params, cancelIndicator),
                 uri -> getWorkspaceManager().doRead(uris.toUri(uri), (document, resource) -> document));
+    }
+
+    /**
+     * The server's own JSON-RPC methods. Xtext adds those of each language's ILanguageServerExtension,
+     * which none of the three binds; asking the languages for them here would make LSP4J's launcher,
+     * which wants the methods before it starts listening, wait for their set-up (MironLanguages
+     * sets them up on their own thread while the server starts: docs/lsp.md, Start-up).
+     */
+    @Override
+    public Map<String, JsonRpcMethod> supportedMethods() {
+        return ServiceEndpoints.getSupportedMethods(getClass());
     }
 
     // Completion also starts where the three languages want it: '<' and '"' in BT, '::' in MIRoN.

@@ -28,18 +28,26 @@ import org.eclipse.lsp4j.services.LanguageServer;
  * The training run of the server's AppCDS archive (`./miron lsp`, docs/lsp.md): an editor session
  * in one process, the server on piped streams, that opens a model, waits for its diagnostics and
  * asks for completion and hover, so the archive holds the classes a first file needs. Exits 0 once
- * the diagnostics arrived, 1 if they did not within a minute.
+ * the diagnostics arrived, 1 if they did not within a minute or anything failed (a missing model).
  */
 public final class ServerTraining {
     private ServerTraining() {
     }
 
-    public static void main(String[] args) throws Exception {
+    public static void main(String[] args) {
         if (args.length != 1) {
             System.err.println("usage: ServerTraining MODEL.miron");
             System.exit(2);
         }
-        System.exit(train(Path.of(args[0]).toAbsolutePath().normalize()) ? 0 : 1);
+        int status;
+        try {
+            status = train(Path.of(args[0]).toAbsolutePath().normalize()) ? 0 : 1;
+        } catch (Exception | Error e) {
+            // Exit all the same: the server's threads would keep the JVM, and ./miron lsp, waiting.
+            System.err.println("ServerTraining: " + e);
+            status = 1;
+        }
+        System.exit(status);
     }
 
     private static boolean train(Path model) throws Exception {

@@ -17,6 +17,7 @@ import org.miron.testkit.lsp.LspClient;
 /**
  * `gradle :org.miron.lsp:lspBenchmark`: latencies of the language server seen by an LSP client
  * (JSON-RPC over piped streams, as in the tests), printed, not asserted. Numbers go to docs/lsp.md.
+ * The start-up of a server process is lspStartup's ({@link ServerStartup}).
  */
 public final class LspBenchmark {
     private static final int WARM_UP = 10;
@@ -28,7 +29,6 @@ public final class LspBenchmark {
     public static void main(String[] args) throws Exception {
         System.out.println("MIRoN language server latencies (" + RUNS + " runs after " + WARM_UP + " warm-up runs; ms)");
         System.out.printf(Locale.ROOT, "%-58s %8s %8s %8s%n", "measure", "median", "p90", "max");
-        ServerStartup.benchmark();
         for (String example : List.of("intralogistics", "hospital-delivery")) {
             benchmark(example);
         }

@@ -1,68 +1,80 @@
 package org.miron.lsp.server;
 
-import java.io.File;
+import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
+
 import org.miron.testkit.Examples;
 import org.miron.testkit.Folders;
 import org.miron.testkit.lsp.LspClient;
 
 /**
- * The start-up an editor user waits for, measured by lspBenchmark: a server process is spawned
- * (java on the server's jar class path, as `miron lsp` runs it), and the client times `initialize`
- * answered and the first diagnostics of the opened intralogistics.miron, from the spawn. Several
- * fresh processes each, without and with the AppCDS archive of `lspArchive`, and with the C1
- * compiler only (as `./miron lsp` runs); printed, not asserted, with the server's CPU time.
+ * `gradle :org.miron.lsp:lspStartup`: the start-up an editor user waits for. A server process is
+ * spawned as an editor spawns it, `./miron lsp` (AppCDS archive, unsigned jars, C1), and for
+ * comparison plain java on the server's class path; the client times `initialize` answered and
+ * the first diagnostics of the opened intralogistics.miron from the spawn, with the server's CPU
+ * time until then. The variants alternate, so that the machine's load weighs on both alike; with
+ * -Pbusy a second process keeps a core busy all along. Printed, not asserted (docs/lsp.md).
  */
-final class ServerStartup {
+public final class ServerStartup {
     private ServerStartup() {
     }
 
-    static void benchmark() throws Exception {
+    public static void main(String[] args) throws Exception {
+        int starts = Integer.parseInt(System.getProperty("miron.benchmark.starts", "10"));
+        boolean busy = Boolean.getBoolean("miron.benchmark.busy");
+        Path launcher = Path.of(System.getProperty("miron.root"), "miron");
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Map<String, List<String>> variants = new LinkedHashMap<>();
+        variants.put("./miron lsp", List.of(launcher.toString(), "lsp"));
         String classpath = System.getProperty("miron.lsp.classpath");
-        if (classpath == null) {
-            System.out.println("(no miron.lsp.classpath: process start-up not measured)");
-            return;
+        if (classpath != null && !Boolean.getBoolean("miron.benchmark.launcherOnly")) {
+            variants.put("java -cp <server jars> (no archive, C2)",
+                    List.of(java, "-Xss4m", "-cp", classpath, MironLanguageServer.class.getName()));
         }
-        int starts = Integer.parseInt(System.getProperty("miron.benchmark.starts", "5"));
-        String archive = System.getProperty("miron.lsp.archive", "");
-        List<List<String>> variants = new ArrayList<>();
-        variants.add(List.of());
-        if (!archive.isEmpty() && new File(archive).isFile()) {
-            variants.add(List.of("-XX:SharedArchiveFile=" + archive, "-Xlog:cds=off"));
-            // What `./miron lsp` runs: the archive and the C1 compiler only.
-            variants.add(List.of("-XX:SharedArchiveFile=" + archive, "-Xlog:cds=off", "-XX:TieredStopAtLevel=1"));
-        }
-        System.out.printf(Locale.ROOT, "%-58s %8s %8s %8s%n", "process start-up (" + starts + " fresh processes each)",
-                "min", "median", "max");
-        for (List<String> flags : variants) {
-            List<Double> initialized = new ArrayList<>();
-            List<Double> diagnosed = new ArrayList<>();
-            List<Double> cpu = new ArrayList<>();
+        // Untimed: the first `./miron lsp` after a build trains its archive; the client warms up.
+        long warmUp = System.nanoTime();
+        once(variants.get("./miron lsp"));
+        System.out.printf(Locale.ROOT, "warm-up start of ./miron lsp (trains the archive after a build): %.0f ms%n",
+                (System.nanoTime() - warmUp) / 1e6);
+
+        Process spinner = busy ? new ProcessBuilder("sh", "-c", "while :; do :; done").start() : null;
+        try {
+            Map<String, List<double[]>> times = new LinkedHashMap<>();
             for (int i = 0; i < starts; i++) {
-                double[] times = once(classpath, flags);
-                initialized.add(times[0]);
-                diagnosed.add(times[1]);
-                cpu.add(times[2]);
+                for (Map.Entry<String, List<String>> variant : variants.entrySet()) {
+                    times.computeIfAbsent(variant.getKey(), k -> new ArrayList<>()).add(once(variant.getValue()));
+                }
             }
-            String name = flags.isEmpty() ? "no archive" : flags.size() == 2 ? "archive" : "archive, C1";
-            print("spawn -> initialize answered (" + name + ")", initialized);
-            print("spawn -> first .miron diagnostics (" + name + ")", diagnosed);
-            // CPU time depends less on what else the machine runs than wall time does.
-            print("  server CPU until then (" + name + ")", cpu);
+            System.out.printf(Locale.ROOT, "%d fresh server processes each%s; ms: min / median / worst%n", starts,
+                    busy ? ", with a second process keeping one core busy" : "");
+            for (Map.Entry<String, List<double[]>> variant : times.entrySet()) {
+                System.out.println(variant.getKey());
+                print("  spawn -> initialize answered", variant.getValue(), 0);
+                print("  spawn -> first .miron diagnostics", variant.getValue(), 1);
+                // CPU time depends less on what else the machine runs than wall time does.
+                print("  server CPU until then", variant.getValue(), 2);
+            }
+        } finally {
+            if (spinner != null) {
+                spinner.destroyForcibly();
+            }
         }
+        System.out.printf(Locale.ROOT, "load average at the end: %.1f%n",
+                ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+        System.exit(0);
     }
 
-    private static double[] once(String classpath, List<String> flags) throws Exception {
+    /** One editor session: spawn, initialize, open the model, its diagnostics; then shutdown and exit. */
+    private static double[] once(List<String> command) throws Exception {
         Path workspace = Examples.copy("intralogistics");
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xss4m"));
-        command.addAll(flags);
-        command.addAll(List.of("-cp", classpath, MironLanguageServer.class.getName()));
         long start = System.nanoTime();
         Process process = new ProcessBuilder(command)
                 .redirectError(ProcessBuilder.Redirect.appendTo(workspace.resolve("server.log").toFile())).start();
@@ -85,10 +97,12 @@ final class ServerStartup {
         }
     }
 
-    private static void print(String measure, List<Double> values) {
-        List<Double> sorted = new ArrayList<>(values);
+    private static void print(String measure, List<double[]> runs, int index) {
+        List<Double> sorted = new ArrayList<>();
+        runs.forEach(run -> sorted.add(run[index]));
         Collections.sort(sorted);
-        System.out.printf(Locale.ROOT, "%-58s %8.0f %8.0f %8.0f%n", measure, sorted.get(0), sorted.get(sorted.size() / 2),
-                sorted.get(sorted.size() - 1));
+        int n = sorted.size();
+        double median = n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
+        System.out.printf(Locale.ROOT, "%-44s %6.0f / %6.0f / %6.0f%n", measure, sorted.get(0), median, sorted.get(n - 1));
     }
 }
