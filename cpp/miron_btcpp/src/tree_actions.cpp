@@ -1,0 +1,202 @@
+// Which actions a woven tree needs as skills: read from the file (and its includes) with tinyxml2,
+// the declared ones from <TreeNodesModel> with their ports, the used ones with the attributes they
+// are given (BehaviorTree.CPP 4 refuses an attribute that is not a declared port).
+#include "nodes.hpp"
+#include "tree_actions.hpp"
+#include "miron_btcpp/miron_btcpp.hpp"
+
+#include <tinyxml2.h>
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace miron::btcpp
+{
+
+namespace
+{
+
+const std::set<std::string> GENERIC_TAGS = { "Action", "Condition", "Control", "Decorator", "SubTree",
+                                             "SubTreePlus", "BehaviorTree", "TreeNodesModel", "include",
+                                             "root" };
+
+bool isSpecialAttribute(const std::string& name)
+{
+  return name == "ID" || name == "name" || (!name.empty() && name[0] == '_');
+}
+
+class Scanner
+{
+public:
+  explicit Scanner(const BT::BehaviorTreeFactory& factory) : factory_(factory) {}
+
+  void scanFile(const std::filesystem::path& file)
+  {
+    auto canonical = std::filesystem::weakly_canonical(file);
+    if(!visited_.insert(canonical.string()).second)
+    {
+      return;
+    }
+    auto doc = std::make_unique<tinyxml2::XMLDocument>();
+    if(doc->LoadFile(canonical.string().c_str()) != tinyxml2::XML_SUCCESS)
+    {
+      throw BT::RuntimeError("miron-btcpp: cannot read " + file.string() + ": " + doc->ErrorStr());
+    }
+    auto* root = doc->RootElement();
+    if(!root)
+    {
+      return;
+    }
+    for(auto* e = root->FirstChildElement("BehaviorTree"); e; e = e->NextSiblingElement("BehaviorTree"))
+    {
+      if(const char* id = e->Attribute("ID"))
+      {
+        trees_.insert(id);
+      }
+    }
+    for(auto* e = root->FirstChildElement("include"); e; e = e->NextSiblingElement("include"))
+    {
+      if(const char* path = e->Attribute("path"))
+      {
+        scanFile(canonical.parent_path() / path);
+      }
+    }
+    for(auto* model = root->FirstChildElement("TreeNodesModel"); model;
+        model = model->NextSiblingElement("TreeNodesModel"))
+    {
+      for(auto* action = model->FirstChildElement("Action"); action; action = action->NextSiblingElement("Action"))
+      {
+        if(const char* id = action->Attribute("ID"))
+        {
+          auto& ports = actions_[id];
+          collectPorts(action, "input_port", ports.inputs);
+          collectPorts(action, "output_port", ports.outputs);
+          collectPorts(action, "inout_port", ports.inouts);
+        }
+      }
+    }
+    for(auto* e = root->FirstChildElement("BehaviorTree"); e; e = e->NextSiblingElement("BehaviorTree"))
+    {
+      bodies_.push_back(e);
+    }
+    docs_.push_back(std::move(doc));
+    // the used actions are collected once every tree ID is known (a tree ID used as a tag is a SubTree)
+  }
+
+  std::map<std::string, ActionPorts> actions()
+  {
+    for(auto* body : bodies_)
+    {
+      for(auto* child = body->FirstChildElement(); child; child = child->NextSiblingElement())
+      {
+        collectUses(child);
+      }
+    }
+    return actions_;
+  }
+
+private:
+  static void collectPorts(tinyxml2::XMLElement* action, const char* tag, std::set<std::string>& into)
+  {
+    for(auto* port = action->FirstChildElement(tag); port; port = port->NextSiblingElement(tag))
+    {
+      if(const char* name = port->Attribute("name"))
+      {
+        into.insert(name);
+      }
+    }
+  }
+
+  void collectUses(tinyxml2::XMLElement* e)
+  {
+    std::string tag = e->Name();
+    std::string id;
+    if(tag == "Action" && e->Attribute("ID"))
+    {
+      id = e->Attribute("ID");
+    }
+    else if(!GENERIC_TAGS.count(tag) && !trees_.count(tag) && !e->FirstChildElement() &&
+            factory_.manifests().count(tag) == 0)
+    {
+      id = tag;  // the compact form <MoveTo x="1"/>
+    }
+    if(!id.empty() && factory_.manifests().count(id) == 0)
+    {
+      auto& ports = actions_[id];
+      for(auto* a = e->FirstAttribute(); a; a = a->Next())
+      {
+        std::string name = a->Name();
+        if(!isSpecialAttribute(name) && !ports.outputs.count(name) && !ports.inouts.count(name))
+        {
+          ports.inputs.insert(name);
+        }
+      }
+    }
+    for(auto* child = e->FirstChildElement(); child; child = child->NextSiblingElement())
+    {
+      collectUses(child);
+    }
+  }
+
+  const BT::BehaviorTreeFactory& factory_;
+  std::set<std::string> visited_;
+  std::set<std::string> trees_;
+  std::vector<std::unique_ptr<tinyxml2::XMLDocument>> docs_;
+  std::vector<tinyxml2::XMLElement*> bodies_;
+  std::map<std::string, ActionPorts> actions_;
+};
+}  // namespace
+
+std::map<std::string, ActionPorts> actionsOf(const BT::BehaviorTreeFactory& factory, const std::string& tree_file)
+{
+  Scanner scanner(factory);
+  scanner.scanFile(tree_file);
+  return scanner.actions();
+}
+
+BT::TreeNodeManifest manifestOf(const std::string& id, const ActionPorts& ports)
+{
+  BT::TreeNodeManifest manifest;
+  manifest.type = BT::NodeType::ACTION;
+  manifest.registration_ID = id;
+  for(const auto& p : ports.inputs)
+  {
+    if(!ports.outputs.count(p) && !ports.inouts.count(p))
+    {
+      manifest.ports.insert(BT::InputPort<BT::AnyTypeAllowed>(p));
+    }
+  }
+  for(const auto& p : ports.outputs)
+  {
+    manifest.ports.insert(BT::OutputPort<BT::AnyTypeAllowed>(p));
+  }
+  for(const auto& p : ports.inouts)
+  {
+    manifest.ports.insert(BT::BidirectionalPort<BT::AnyTypeAllowed>(p));
+  }
+  return manifest;
+}
+
+std::set<std::string> registerSkillActions(BT::BehaviorTreeFactory& factory, const std::string& tree_file)
+{
+  std::set<std::string> registered;
+  for(const auto& [id, ports] : actionsOf(factory, tree_file))
+  {
+    if(factory.manifests().count(id) != 0)
+    {
+      continue;  // the user's own node, or VariantAction
+    }
+    auto manifest = manifestOf(id, ports);
+    manifest.description = "MIRoN skill action: push-skill " + id + " to the SmartSoft skill interface";
+    std::set<std::string> outputs = ports.outputs;
+    factory.registerBuilder(manifest, [id, outputs](const std::string& name, const BT::NodeConfig& config) {
+      return std::make_unique<SkillAction>(name, config, id, outputs);
+    });
+    registered.insert(id);
+  }
+  return registered;
+}
+
+}  // namespace miron::btcpp
