@@ -3,7 +3,7 @@
 #pragma once
 
 #include <behaviortree_cpp/blackboard.h>
-#include <nlohmann/json.hpp>
+#include <behaviortree_cpp/contrib/json.hpp>  // the nlohmann::json BehaviorTree.CPP ships (one copy: no ODR clash)
 
 #include <condition_variable>
 #include <map>

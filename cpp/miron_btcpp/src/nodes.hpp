@@ -57,7 +57,7 @@ private:
   long running_ = 0;
 };
 
-/** Copies the blackboard decisions into the root blackboard of this node's tree. */
-void feedBlackboardOf(BT::TreeNode& node);
+/** Copies the blackboard decisions into the root blackboard of the tree whose blackboard this is. */
+void feedBlackboardOf(const BT::Blackboard::Ptr& blackboard);
 
 }  // namespace miron::btcpp

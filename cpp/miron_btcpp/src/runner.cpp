@@ -9,7 +9,7 @@
 
 #include <behaviortree_cpp/loggers/abstract_logger.h>
 #include <behaviortree_cpp/loggers/groot2_publisher.h>
-#include <nlohmann/json.hpp>
+#include <behaviortree_cpp/contrib/json.hpp>  // the nlohmann::json BehaviorTree.CPP ships (one copy: no ODR clash)
 
 #include <atomic>
 #include <csignal>

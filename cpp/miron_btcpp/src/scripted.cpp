@@ -3,7 +3,7 @@
 #include "tree_actions.hpp"
 
 #include <behaviortree_cpp/action_node.h>
-#include <nlohmann/json.hpp>
+#include <behaviortree_cpp/contrib/json.hpp>  // the nlohmann::json BehaviorTree.CPP ships (one copy: no ODR clash)
 
 #include <filesystem>
 #include <fstream>

@@ -16,7 +16,7 @@ SkillAction::SkillAction(const std::string& name, const BT::NodeConfig& config, 
 
 BT::NodeStatus SkillAction::onStart()
 {
-  feedBlackboardOf(*this);
+  feedBlackboardOf(config().blackboard);
   nlohmann::json in = nlohmann::json::object();
   for(const auto& [port, raw] : config().input_ports)
   {

@@ -92,7 +92,7 @@ long SkillClient::push(const std::string& skill, const nlohmann::json& in_attrib
                                  { "in-attribute", in_attributes },
                                  { "out-attribute", nlohmann::json::object() } } } };
   std::lock_guard<std::mutex> lock(mutex_);
-  pending_[id] = Pending{ skill, Clock::now() + std::chrono::milliseconds(deadline_ms_) };
+  pending_[id] = Pending{ skill, Clock::now() + std::chrono::milliseconds(deadline_ms_), false, std::nullopt };
   outbox_.push_back(Request{ id, message.dump() });
   return id;
 }

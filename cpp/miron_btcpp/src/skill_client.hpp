@@ -11,7 +11,7 @@
 // up, so a short skill's result cannot arrive before our SUB is connected.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <behaviortree_cpp/contrib/json.hpp>  // the nlohmann::json BehaviorTree.CPP ships (one copy: no ODR clash)
 
 #include <atomic>
 #include <chrono>

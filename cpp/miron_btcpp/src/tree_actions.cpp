@@ -189,7 +189,6 @@ std::set<std::string> registerSkillActions(BT::BehaviorTreeFactory& factory, con
       continue;  // the user's own node, or VariantAction
     }
     auto manifest = manifestOf(id, ports);
-    manifest.description = "MIRoN skill action: push-skill " + id + " to the SmartSoft skill interface";
     std::set<std::string> outputs = ports.outputs;
     factory.registerBuilder(manifest, [id, outputs](const std::string& name, const BT::NodeConfig& config) {
       return std::make_unique<SkillAction>(name, config, id, outputs);

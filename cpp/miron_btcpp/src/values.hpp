@@ -3,7 +3,7 @@
 
 #include <behaviortree_cpp/utils/safe_any.hpp>
 #include <behaviortree_cpp/blackboard.h>
-#include <nlohmann/json.hpp>
+#include <behaviortree_cpp/contrib/json.hpp>  // the nlohmann::json BehaviorTree.CPP ships (one copy: no ODR clash)
 
 #include <string>
 

@@ -4,9 +4,9 @@
 namespace miron::btcpp
 {
 
-void feedBlackboardOf(BT::TreeNode& node)
+void feedBlackboardOf(const BT::Blackboard::Ptr& blackboard)
 {
-  if(auto* root = node.config().blackboard ? node.config().blackboard->rootBlackboard() : nullptr)
+  if(auto* root = blackboard ? blackboard->rootBlackboard() : nullptr)
   {
     Runtime::instance().decisions().applyTo(*root);
   }
@@ -36,7 +36,7 @@ BT::PortsList VariantAction::providedPorts()
 
 BT::NodeStatus VariantAction::follow()
 {
-  feedBlackboardOf(*this);
+  feedBlackboardOf(config().blackboard);
   if(auto value = Runtime::instance().decisions().variant(varpoint_))
   {
     setOutput("value", *value);
