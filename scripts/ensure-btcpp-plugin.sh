@@ -25,7 +25,7 @@ missing=()
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v g++ >/dev/null 2>&1 || missing+=(g++)
 [ -f /usr/include/zmq.h ] || missing+=(libzmq3-dev)
-[ -f /usr/include/tinyxml2.h ] || missing+=(libtinyxml2-dev)
+[ -f /usr/include/pugixml.hpp ] || missing+=(libpugixml-dev)
 if [ ${#missing[@]} -gt 0 ]; then
     echo "btcpp plugin: installing ${missing[*]} (apt)" >&2
     export DEBIAN_FRONTEND=noninteractive

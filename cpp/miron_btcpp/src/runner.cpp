@@ -156,6 +156,7 @@ int main(int argc, char** argv)
   std::signal(SIGTERM, [](int) { stop_requested = true; });
   std::signal(SIGINT, [](int) { stop_requested = true; });
 
+  tree_file = std::filesystem::absolute(tree_file).string();  // BT.CPP resolves includes from its folder
   miron::btcpp::configure(endpoints);
   BT::BehaviorTreeFactory factory;
   BT::Tree tree;

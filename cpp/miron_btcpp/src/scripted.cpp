@@ -60,7 +60,8 @@ int runScripted(const std::string& scenario_file, const std::string& plugin)
     std::cerr << scenario_file << ": error: not a scenario (a JSON object with \"tree\")" << std::endl;
     return 2;
   }
-  auto tree_file = (std::filesystem::path(scenario_file).parent_path() / scenario["tree"].get<std::string>()).string();
+  auto tree_file = std::filesystem::absolute(std::filesystem::absolute(scenario_file).parent_path() /
+                                             scenario["tree"].get<std::string>()).string();
   std::vector<std::string> trace;
   Endpoints offline;
   offline.bus = "";  // decisions come from the script only
@@ -68,7 +69,8 @@ int runScripted(const std::string& scenario_file, const std::string& plugin)
   BT::BehaviorTreeFactory factory;
   factory.registerFromPlugin(plugin);
   auto ports = actionsOf(factory, tree_file);
-  for(const auto& [id, statuses] : scenario.value("actions", json::object()).items())
+  const json actions = scenario.value("actions", json::object());
+  for(const auto& [id, statuses] : actions.items())
   {
     auto script = std::make_shared<Script>();
     script->statuses = statuses.get<std::vector<std::string>>();
@@ -93,7 +95,8 @@ int runScripted(const std::string& scenario_file, const std::string& plugin)
   for(int n = 1; n <= ticks; n++)
   {
     trace.clear();
-    for(const auto& [vp, value] : variants.value(std::to_string(n), json::object()).items())
+    const json decided = variants.value(std::to_string(n), json::object());
+    for(const auto& [vp, value] : decided.items())
     {
       setVariant(vp, value.is_string() ? value.get<std::string>() : value.dump());
     }
@@ -109,7 +112,8 @@ int runScripted(const std::string& scenario_file, const std::string& plugin)
       return 0;
     }
     json values = json::object();
-    for(const auto& key : scenario.value("blackboard", std::vector<std::string>{}))
+    const auto keys = scenario.value("blackboard", std::vector<std::string>{});
+    for(const auto& key : keys)
     {
       values[key] = nullptr;
       if(auto entry = tree.rootBlackboard()->getEntry(key); entry && !entry->value.empty())

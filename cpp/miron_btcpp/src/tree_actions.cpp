@@ -1,11 +1,12 @@
-// Which actions a woven tree needs as skills: read from the file (and its includes) with tinyxml2,
+// Which actions a woven tree needs as skills: read from the file (and its includes) with pugixml,
 // the declared ones from <TreeNodesModel> with their ports, the used ones with the attributes they
-// are given (BehaviorTree.CPP 4 refuses an attribute that is not a declared port).
+// are given (BehaviorTree.CPP 4 refuses an attribute that is not a declared port). pugixml, not
+// tinyxml2: BehaviorTree.CPP exports the symbols of its own tinyxml2 copy, which would clash.
 #include "nodes.hpp"
 #include "tree_actions.hpp"
 #include "miron_btcpp/miron_btcpp.hpp"
 
-#include <tinyxml2.h>
+#include <pugixml.hpp>
 
 #include <filesystem>
 #include <map>
@@ -39,47 +40,40 @@ public:
     {
       return;
     }
-    auto doc = std::make_unique<tinyxml2::XMLDocument>();
-    if(doc->LoadFile(canonical.string().c_str()) != tinyxml2::XML_SUCCESS)
+    auto doc = std::make_unique<pugi::xml_document>();
+    auto loaded = doc->load_file(canonical.string().c_str());
+    if(!loaded)
     {
-      throw BT::RuntimeError("miron-btcpp: cannot read " + file.string() + ": " + doc->ErrorStr());
+      throw BT::RuntimeError("miron-btcpp: cannot read " + file.string() + ": " + loaded.description());
     }
-    auto* root = doc->RootElement();
-    if(!root)
+    auto root = doc->document_element();
+    for(auto e : root.children("BehaviorTree"))
     {
-      return;
-    }
-    for(auto* e = root->FirstChildElement("BehaviorTree"); e; e = e->NextSiblingElement("BehaviorTree"))
-    {
-      if(const char* id = e->Attribute("ID"))
+      if(auto id = e.attribute("ID"))
       {
-        trees_.insert(id);
+        trees_.insert(id.value());
+      }
+      bodies_.push_back(e);
+    }
+    for(auto e : root.children("include"))
+    {
+      if(auto path = e.attribute("path"))
+      {
+        scanFile(canonical.parent_path() / path.value());
       }
     }
-    for(auto* e = root->FirstChildElement("include"); e; e = e->NextSiblingElement("include"))
+    for(auto model : root.children("TreeNodesModel"))
     {
-      if(const char* path = e->Attribute("path"))
+      for(auto action : model.children("Action"))
       {
-        scanFile(canonical.parent_path() / path);
-      }
-    }
-    for(auto* model = root->FirstChildElement("TreeNodesModel"); model;
-        model = model->NextSiblingElement("TreeNodesModel"))
-    {
-      for(auto* action = model->FirstChildElement("Action"); action; action = action->NextSiblingElement("Action"))
-      {
-        if(const char* id = action->Attribute("ID"))
+        if(auto id = action.attribute("ID"))
         {
-          auto& ports = actions_[id];
+          auto& ports = actions_[id.value()];
           collectPorts(action, "input_port", ports.inputs);
           collectPorts(action, "output_port", ports.outputs);
           collectPorts(action, "inout_port", ports.inouts);
         }
       }
-    }
-    for(auto* e = root->FirstChildElement("BehaviorTree"); e; e = e->NextSiblingElement("BehaviorTree"))
-    {
-      bodies_.push_back(e);
     }
     docs_.push_back(std::move(doc));
     // the used actions are collected once every tree ID is known (a tree ID used as a tag is a SubTree)
@@ -87,37 +81,40 @@ public:
 
   std::map<std::string, ActionPorts> actions()
   {
-    for(auto* body : bodies_)
+    for(auto body : bodies_)
     {
-      for(auto* child = body->FirstChildElement(); child; child = child->NextSiblingElement())
+      for(auto child : body.children())
       {
-        collectUses(child);
+        if(child.type() == pugi::node_element)
+        {
+          collectUses(child);
+        }
       }
     }
     return actions_;
   }
 
 private:
-  static void collectPorts(tinyxml2::XMLElement* action, const char* tag, std::set<std::string>& into)
+  static void collectPorts(pugi::xml_node action, const char* tag, std::set<std::string>& into)
   {
-    for(auto* port = action->FirstChildElement(tag); port; port = port->NextSiblingElement(tag))
+    for(auto port : action.children(tag))
     {
-      if(const char* name = port->Attribute("name"))
+      if(auto name = port.attribute("name"))
       {
-        into.insert(name);
+        into.insert(name.value());
       }
     }
   }
 
-  void collectUses(tinyxml2::XMLElement* e)
+  void collectUses(pugi::xml_node e)
   {
-    std::string tag = e->Name();
+    std::string tag = e.name();
     std::string id;
-    if(tag == "Action" && e->Attribute("ID"))
+    if(tag == "Action" && e.attribute("ID"))
     {
-      id = e->Attribute("ID");
+      id = e.attribute("ID").value();
     }
-    else if(!GENERIC_TAGS.count(tag) && !trees_.count(tag) && !e->FirstChildElement() &&
+    else if(!GENERIC_TAGS.count(tag) && !trees_.count(tag) && !e.find_child([](pugi::xml_node n) { return n.type() == pugi::node_element; }) &&
             factory_.manifests().count(tag) == 0)
     {
       id = tag;  // the compact form <MoveTo x="1"/>
@@ -125,26 +122,29 @@ private:
     if(!id.empty() && factory_.manifests().count(id) == 0)
     {
       auto& ports = actions_[id];
-      for(auto* a = e->FirstAttribute(); a; a = a->Next())
+      for(auto a : e.attributes())
       {
-        std::string name = a->Name();
+        std::string name = a.name();
         if(!isSpecialAttribute(name) && !ports.outputs.count(name) && !ports.inouts.count(name))
         {
           ports.inputs.insert(name);
         }
       }
     }
-    for(auto* child = e->FirstChildElement(); child; child = child->NextSiblingElement())
+    for(auto child : e.children())
     {
-      collectUses(child);
+      if(child.type() == pugi::node_element)
+      {
+        collectUses(child);
+      }
     }
   }
 
   const BT::BehaviorTreeFactory& factory_;
   std::set<std::string> visited_;
   std::set<std::string> trees_;
-  std::vector<std::unique_ptr<tinyxml2::XMLDocument>> docs_;
-  std::vector<tinyxml2::XMLElement*> bodies_;
+  std::vector<std::unique_ptr<pugi::xml_document>> docs_;
+  std::vector<pugi::xml_node> bodies_;
   std::map<std::string, ActionPorts> actions_;
 };
 }  // namespace
