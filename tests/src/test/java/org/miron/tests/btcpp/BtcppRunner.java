@@ -65,16 +65,18 @@ final class BtcppRunner implements AutoCloseable {
             String line;
             while ((line = in.readLine()) != null) {
                 synchronized (this) {
-                    if (json) {
+                    if (json && line.startsWith("{")) {
                         lines.add(Json.MAPPER.readTree(line));
                     } else {
-                        errors.append(line).append('\n');
+                        errors.append(line).append('\n'); // BehaviorTree.CPP itself prints some warnings on stdout
                     }
                     notifyAll();
                 }
             }
         } catch (IOException e) {
-            // the process ended
+            synchronized (this) {
+                errors.append("(reading the runner's output: ").append(e).append(")\n");
+            }
         }
         synchronized (this) {
             if (json) {
@@ -121,12 +123,12 @@ final class BtcppRunner implements AutoCloseable {
 
     /** SIGTERM, then the runner's stop line (it halts the tree and sends its aborts first). */
     JsonNode stop() throws InterruptedException {
-        process.destroy();
+        process.toHandle().destroy(); // SIGTERM; Process.destroy() would also close our end of its output
         if (!process.waitFor(30, TimeUnit.SECONDS)) {
             throw new AssertionError("miron-btcpp-run did not stop on SIGTERM: " + stderr());
         }
         awaitEnd();
-        return await("stop line", l -> l.path("event").asText().equals("stop"), 1000);
+        return await("stop line (exit status " + process.exitValue() + ")", l -> l.path("event").asText().equals("stop"), 1000);
     }
 
     boolean isAlive() {
