@@ -166,6 +166,36 @@ public class LiveWireTest {
         assertEquals(stopped.toString(), 2, stopped.path("counters").path("aborted").asInt());
     }
 
+    @Test
+    public void grootAttachesBehaviorTreeCppsPublisher() throws Exception {
+        start(100);
+        int port;
+        try (java.net.ServerSocket free = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            port = free.getLocalPort();
+        }
+        runner = new BtcppRunner(List.of(tree.toString(), "--bus", endpoints.busOut(), "--skill-requests",
+                endpoints.request(), "--skill-results", endpoints.skillEvents(), "--decision-wait", "0",
+                "--groot", Integer.toString(port)));
+        JsonNode started = runner.await("start", l -> l.path("event").asText().equals("start"), 30_000);
+        assertEquals(port, started.path("groot").asInt());
+        // Groot2 connects a ZeroMQ REQ to PORT: the publisher listens there once the tree runs
+        try (org.zeromq.ZContext ctx = new org.zeromq.ZContext()) {
+            org.zeromq.ZMQ.Socket req = ctx.createSocket(org.zeromq.SocketType.REQ);
+            req.setReceiveTimeOut(20_000);
+            req.connect("tcp://127.0.0.1:" + port);
+            // Groot2's request header: protocol 2, request type 'T' (the full tree), a unique id
+            byte[] header = new byte[6];
+            header[0] = 2;
+            header[1] = 'T';
+            assertTrue(req.send(header));
+            byte[] reply = req.recv();
+            assertTrue("the Groot2 publisher answers", reply != null && reply.length > 0);
+            byte[] xml = req.hasReceiveMore() ? req.recv() : new byte[0];
+            assertTrue(new String(xml, java.nio.charset.StandardCharsets.UTF_8),
+                    new String(xml, java.nio.charset.StandardCharsets.UTF_8).contains("VariantAction"));
+        }
+    }
+
     private void awaitResults(String what, int aborts) throws InterruptedException {
         long end = System.currentTimeMillis() + 20_000;
         while (System.currentTimeMillis() < end) {
