@@ -29,10 +29,13 @@ import org.miron.testkit.RepositoryRoot;
 
 /**
  * The intralogistics demo (v4 weaving) with the robot on the Java executor and on the real
- * BehaviorTree.CPP 4 (miron-btcpp-run): the same adaptations in the same order, and the same
- * skills: the same set of distinct skill pushes, the same first one, and after each switch of the
- * task the other branch's first skill. (How many skills fit between two adaptations depends on
- * the machine's timing, in either executor, so the whole sequences are not compared push by push.)
+ * BehaviorTree.CPP 4 (miron-btcpp-run): the same adaptations of the behaviour tree in the same
+ * order, and the same skills: the same set of distinct skill pushes, the same first one, and after
+ * each switch of the task the other branch's first skill. What is left out depends on the
+ * machine's timing, not on the executor: how many skills fit between two adaptations, and whether
+ * the person nearby (a burst of contexts the loaded machine may deliver late) lowers safety enough
+ * to slow the robot down (maxVelocity is a change-parameter the engine sends the skill interface
+ * itself; the executor never sees it).
  */
 public class DemoExecutorsTest {
     @ClassRule
@@ -80,14 +83,14 @@ public class DemoExecutorsTest {
         Demo.Result result = new Demo(generated.resolve("intralogistics.io.json"), generated.resolve("intralogistics.ext.xml"),
                 Scenario.load(example.resolve("demo/scenario.json")), SkillTable.load(example.resolve("demo/skills.json")),
                 temp.newFolder().toPath(), Endpoints.freeLoopback(), new PrintWriter(console, true))
-                .timeScale(0.3).provider(roqme, 1000).btcpp(runner).run();
+                .timeScale(0.5).provider(roqme, 1000).btcpp(runner).run();
         List<String> adaptations = new ArrayList<>();
         for (String line : Files.readAllLines(result.decisionLog())) {
             JsonNode decision = Json.MAPPER.readTree(line);
             decision.path("changed").forEach(vp -> {
-                JsonNode value = decision.path("decisions").path(vp.asText());
-                // maxVelocity's exact step depends on the metrics at the solve; slow or fast does not
-                adaptations.add(vp.asText() + " -> " + (value.isNumber() ? (value.asDouble() < 50 ? "slow" : "fast") : value.asText()));
+                if (vp.asText().equals("task")) { // the varpoint bound to the tree
+                    adaptations.add("task -> " + decision.path("decisions").path("task").asText());
+                }
             });
         }
         List<String> pushes = new ArrayList<>();
