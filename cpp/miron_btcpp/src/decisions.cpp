@@ -59,7 +59,14 @@ void Decisions::applyTo(BT::Blackboard& blackboard)
   {
     try
     {
-      if(value.is_boolean())
+      auto entry = blackboard.getEntry(key);
+      if(entry && entry->info.type() == typeid(std::string))
+      {
+        // a string port (skill actions' ports are) created the entry: the number as its text,
+        // which the skill action sends as a number again
+        blackboard.set(key, value.dump());
+      }
+      else if(value.is_boolean())
       {
         blackboard.set(key, value.get<bool>());
       }

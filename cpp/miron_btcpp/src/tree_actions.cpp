@@ -156,6 +156,9 @@ std::map<std::string, ActionPorts> actionsOf(const BT::BehaviorTreeFactory& fact
   return scanner.actions();
 }
 
+// Ports are typed std::string, what the XML holds: an entry a remapping creates from an untyped
+// port makes BehaviorTree.CPP 4.8.2's SetBlackboard write an empty value into it (it cannot parse
+// the literal for an untyped entry), and throw the second time (the entry became BT::Any).
 BT::TreeNodeManifest manifestOf(const std::string& id, const ActionPorts& ports)
 {
   BT::TreeNodeManifest manifest;
@@ -165,16 +168,16 @@ BT::TreeNodeManifest manifestOf(const std::string& id, const ActionPorts& ports)
   {
     if(!ports.outputs.count(p) && !ports.inouts.count(p))
     {
-      manifest.ports.insert(BT::InputPort<BT::AnyTypeAllowed>(p));
+      manifest.ports.insert(BT::InputPort<std::string>(p));
     }
   }
   for(const auto& p : ports.outputs)
   {
-    manifest.ports.insert(BT::OutputPort<BT::AnyTypeAllowed>(p));
+    manifest.ports.insert(BT::OutputPort<std::string>(p));
   }
   for(const auto& p : ports.inouts)
   {
-    manifest.ports.insert(BT::BidirectionalPort<BT::AnyTypeAllowed>(p));
+    manifest.ports.insert(BT::BidirectionalPort<std::string>(p));
   }
   return manifest;
 }

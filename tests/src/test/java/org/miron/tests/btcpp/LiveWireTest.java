@@ -34,6 +34,7 @@ public class LiveWireTest {
     @ClassRule
     public static TemporaryFolder temp = new TemporaryFolder();
     private static Path tree;
+    private static Path hospital;
 
     private final Endpoints endpoints = Endpoints.freeLoopback();
     private Broker broker;
@@ -49,6 +50,9 @@ public class LiveWireTest {
         assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", out.toString(),
                 RepositoryRoot.path().resolve("examples/intralogistics/intralogistics.miron").toString()));
         tree = out.resolve("intralogistics.ext.xml");
+        assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", out.toString(),
+                RepositoryRoot.path().resolve("examples/hospital-delivery/hospital.miron").toString()));
+        hospital = out.resolve("hospital.ext.xml");
     }
 
     private void start(long moveToMs) throws Exception {
@@ -164,6 +168,26 @@ public class LiveWireTest {
         JsonNode stopped = runner.stop(); // SIGTERM halts the tree: the charger MoveTo is aborted too
         awaitResults("the charger MoveTo ends with ABORT", 2);
         assertEquals(stopped.toString(), 2, stopped.path("counters").path("aborted").asInt());
+    }
+
+    /** miron.blackboard.<vp> numbers reach the blackboard under the varpoint's name, where the woven ports read them. */
+    @Test
+    public void blackboardDecisionsReachTheSkillsPorts() throws Exception {
+        start(100);
+        engine.publishRetained("driveSpeed", "miron.blackboard.driveSpeed", "{\"varpoint\":\"driveSpeed\",\"value\":0.7,\"seq\":1,\"time\":1}");
+        engine.publishRetained("inflation", "miron.blackboard.inflation", "{\"varpoint\":\"inflation\",\"value\":0.4,\"seq\":1,\"time\":1}");
+        for (String[] vp : new String[][] { { "navigation", "normal" }, { "preparation", "none" }, { "courtesy", "silent" } }) {
+            engine.publishRetained(vp[0], "miron.variant." + vp[0],
+                    "{\"varpoint\":\"" + vp[0] + "\",\"value\":\"" + vp[1] + "\",\"seq\":1,\"time\":1}");
+        }
+        runner = new BtcppRunner(List.of(hospital.toString(), "--bus", endpoints.busOut(), "--skill-requests",
+                endpoints.request(), "--skill-results", endpoints.skillEvents(), "--period", "20"));
+        JsonNode drive = awaitPushed("MoveBase with the decided speed and inflation", s -> s.path("name").asText().equals("MoveBase")
+                && s.path("in-attribute").path("max_speed").asDouble() == 0.7);
+        assertEquals(drive.toString(), 0.4, drive.path("in-attribute").path("inflation").asDouble(), 0);
+        assertEquals(drive.toString(), "cardiology", drive.path("in-attribute").path("goal").asText());
+        assertTrue("the preparation 'none' skips charging: " + skills.pushed(),
+                skills.pushed().stream().noneMatch(s -> s.path("name").asText().equals("Charge")));
     }
 
     @Test
