@@ -6,6 +6,7 @@
 #                          0.1.4 sdist on PyPI (folder BehaviorTree.CPP/), cached by a marker
 #   build/miron-btcpp      our plugin and runner (CMake, incremental: a no-op when nothing changed)
 # Users with their own BehaviorTree.CPP build cpp/miron_btcpp directly (docs/btcpp-plugin.md).
+# Needs (apt, installed when missing): cmake g++ make pkg-config libzmq3-dev libpugixml-dev.
 # Idempotent; never fails the caller: without a registry, a compiler or libzmq it says why and the
 # tests that need the runner are skipped (they print the reason too).
 set -uo pipefail
@@ -24,6 +25,8 @@ if [ "$(id -u)" -eq 0 ]; then sudo=(); elif command -v sudo >/dev/null 2>&1; the
 missing=()
 command -v cmake >/dev/null 2>&1 || missing+=(cmake)
 command -v g++ >/dev/null 2>&1 || missing+=(g++)
+command -v make >/dev/null 2>&1 || missing+=(make)
+command -v pkg-config >/dev/null 2>&1 || missing+=(pkg-config)
 [ -f /usr/include/zmq.h ] || missing+=(libzmq3-dev)
 [ -f /usr/include/pugixml.hpp ] || missing+=(libpugixml-dev)
 if [ ${#missing[@]} -gt 0 ]; then
