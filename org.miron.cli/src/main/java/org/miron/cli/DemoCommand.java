@@ -69,6 +69,11 @@ public class DemoCommand implements Callable<Integer> {
             description = "weave and run the behaviour tree as BehaviorTree.CPP 3 or 4 (default: the version of the model's tree)")
     Integer btFormat;
 
+    @Option(names = "--executor", paramLabel = "java|btcpp", defaultValue = "java",
+            description = "who runs the woven tree: the Java executor (default) or the real BehaviorTree.CPP 4 through "
+                    + "miron-btcpp-run and the MIRoN plugin (cpp/miron_btcpp, built on first use; implies --bt-format 4)")
+    String executor;
+
     @Option(names = "--backend", paramLabel = "NAME",
             description = "the engine's solver: native (in process, the default), minizinc (the reference) or both")
     String backend;
@@ -117,6 +122,19 @@ public class DemoCommand implements Callable<Integer> {
         }
         if (btFormat != null && btFormat != 3 && btFormat != 4) {
             return usage("--bt-format must be 3 or 4, not " + btFormat);
+        }
+        Path btcppRunner = null;
+        if (executor.equals("btcpp")) {
+            if (btFormat != null && btFormat == 3) {
+                return usage("--executor btcpp runs BehaviorTree.CPP 4 trees: drop --bt-format 3");
+            }
+            btFormat = 4;
+            btcppRunner = BtcppBuild.runner(home, spec.commandLine().getErr());
+            if (btcppRunner == null) {
+                return usage("miron demo: error: miron-btcpp-run could not be built (scripts/ensure-btcpp-plugin.sh says why above)");
+            }
+        } else if (!executor.equals("java")) {
+            return usage("--executor must be java or btcpp, not " + executor);
         }
         Path generated = out.resolve("model");
         String name = modelFile.getFileName().toString().replaceFirst("\\.miron$", "");
@@ -182,7 +200,7 @@ public class DemoCommand implements Callable<Integer> {
         Demo.Result result;
         try {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
-                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend)
+                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
                     .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());

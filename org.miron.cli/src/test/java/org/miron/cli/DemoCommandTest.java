@@ -117,6 +117,17 @@ public class DemoCommandTest {
     }
 
     @Test
+    public void theExecutorIsJavaOrBtcppOnVersion4() {
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setErr(new PrintWriter(err, true));
+        assertEquals(2, cli.execute("demo", "--executor", "python", "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("--executor must be java or btcpp, not python"));
+        assertEquals(2, cli.execute("demo", "--executor", "btcpp", "--bt-format", "3", "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("--executor btcpp runs BehaviorTree.CPP 4 trees"));
+    }
+
+    @Test
     public void aMissingScenarioIsAUsageError() {
         StringWriter err = new StringWriter();
         CommandLine cli = MironCli.commandLine();

@@ -32,7 +32,8 @@ import org.miron.runtime.skill.SkillTable;
  */
 public final class Demo {
     /** What a run produced. */
-    public record Result(int adaptations, int parameterChanges, int missions, Path report, Path decisionLog) {
+    public record Result(int adaptations, int parameterChanges, int missions, Path report, Path decisionLog,
+            List<com.fasterxml.jackson.databind.JsonNode> skillsPushed) {
     }
 
     private final Path ioJson;
@@ -49,6 +50,7 @@ public final class Demo {
     private long periodMs = 1000;
     private ModelNames names = ModelNames.none();
     private Integer monitorPort;
+    private Path btcppRunner;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
             PrintWriter out) {
@@ -95,13 +97,20 @@ public final class Demo {
         return this;
     }
 
+    /**
+     * Runs the tree on BehaviorTree.CPP 4 through this miron-btcpp-run (cpp/miron_btcpp) instead of
+     * the Java executor (null: the Java executor). The tree must be a version-4 tree.
+     */
+    public Demo btcpp(Path runner) {
+        this.btcppRunner = runner;
+        return this;
+    }
+
     public Result run() throws EngineStartException, InterruptedException, java.io.IOException {
         Path decisionLog = outDir.resolve("decisions.jsonl");
         EngineOptions options = new EngineOptions(ioJson).endpoints(endpoints);
         options.decisionLog = decisionLog;
         options.backend = backend;
-        AtomicInteger missions = new AtomicInteger();
-        AtomicBoolean scenarioOver = new AtomicBoolean();
         try (Broker broker = new Broker(endpoints).start();
                 SkillInterfaceMock skillInterface = new SkillInterfaceMock(endpoints.skill(), endpoints.skillEvents(),
                         skills).start();
@@ -116,37 +125,11 @@ public final class Demo {
             Narrator narrator = new Narrator(out, engine.model());
             try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
                     .start();
-                    LiveExecutor executor = new LiveExecutor(endpoints).build(tree, narrator);
                     ScenarioPlayer player = new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
                 narrator.setClock(recorder);
-                out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
-                        + executor.tree().formatVersion() + "; the engine decides with the " + engine.backendName()
-                        + " backend.");
-                if (provider != null) {
-                    out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
-                            + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
-                    provider.start();
-                    if (!provider.awaitSubscribed(10_000)) {
-                        throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");
-                    }
-                }
-                engine.start();
-                Thread robot = new Thread(() -> {
-                    while (!scenarioOver.get()) {
-                        NodeStatus status = executor.run(Duration.ofMillis(50));
-                        if (status == NodeStatus.RUNNING) {
-                            break; // stopped
-                        }
-                        missions.incrementAndGet();
-                        narrator.say(recorder.elapsed(), "ROBOT ", "mission " + status + (scenarioOver.get() ? "" : ", starting again"));
-                    }
-                }, "demo-robot");
-                robot.start();
-                player.play(10_000);
-                Thread.sleep(settleMs);
-                scenarioOver.set(true);
-                executor.stop();
-                robot.join(5000);
+                int missionCount = btcppRunner != null
+                        ? runOnBtcpp(engine, provider, narrator, recorder, player)
+                        : runOnJava(engine, provider, narrator, recorder, player);
                 TimelineReport timeline = new TimelineReport("MIRoN demo: " + engine.model().model(), recorder.events(),
                         recorder.elapsed(), names);
                 TreeSnapshots trees = TreeSnapshots.of(tree, ioJson);
@@ -160,9 +143,65 @@ public final class Demo {
                 Path report = timeline.write(outDir.resolve("report.html"));
                 int adaptations = (int) recorder.events().stream().filter(e -> e.topic().equals("miron.decision"))
                         .mapToLong(e -> e.body().path("changed").size()).sum();
-                return new Result(adaptations, skillInterface.history().size(), missions.get(), report, decisionLog);
+                return new Result(adaptations, skillInterface.history().size(), missionCount, report, decisionLog,
+                        skillInterface.pushed());
             }
         }
+    }
+
+    private int runOnJava(Engine engine, LiveProvider provider, Narrator narrator, BusRecorder recorder,
+            ScenarioPlayer player) throws InterruptedException, EngineStartException {
+        AtomicInteger missions = new AtomicInteger();
+        AtomicBoolean scenarioOver = new AtomicBoolean();
+        try (LiveExecutor executor = new LiveExecutor(endpoints).build(tree, narrator)) {
+            out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
+                    + executor.tree().formatVersion() + "; the engine decides with the " + engine.backendName()
+                    + " backend.");
+            startProviderAndEngine(engine, provider);
+            Thread robot = new Thread(() -> {
+                while (!scenarioOver.get()) {
+                    NodeStatus status = executor.run(Duration.ofMillis(50));
+                    if (status == NodeStatus.RUNNING) {
+                        break; // stopped
+                    }
+                    missions.incrementAndGet();
+                    narrator.say(recorder.elapsed(), "ROBOT ", "mission " + status + (scenarioOver.get() ? "" : ", starting again"));
+                }
+            }, "demo-robot");
+            robot.start();
+            player.play(10_000);
+            Thread.sleep(settleMs);
+            scenarioOver.set(true);
+            executor.stop();
+            robot.join(5000);
+        }
+        return missions.get();
+    }
+
+    private int runOnBtcpp(Engine engine, LiveProvider provider, Narrator narrator, BusRecorder recorder,
+            ScenarioPlayer player) throws InterruptedException, java.io.IOException, EngineStartException {
+        try (BtcppExecutor executor = new BtcppExecutor(btcppRunner, tree, endpoints, narrator, recorder)) {
+            out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs on the real BehaviorTree.CPP 4 "
+                    + "(miron-btcpp-run with the MIRoN plugin); the engine decides with the " + engine.backendName()
+                    + " backend.");
+            startProviderAndEngine(engine, provider);
+            executor.start();
+            player.play(10_000);
+            Thread.sleep(settleMs);
+            return executor.stop();
+        }
+    }
+
+    private void startProviderAndEngine(Engine engine, LiveProvider provider) throws InterruptedException, EngineStartException {
+        if (provider != null) {
+            out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
+                    + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
+            provider.start();
+            if (!provider.awaitSubscribed(10_000)) {
+                throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");
+            }
+        }
+        engine.start();
     }
 
     private List<String> properties() {
