@@ -55,6 +55,8 @@ public final class Simulation {
     private final CompiledModel roqme;
     private final Provider provider;
     private final InputState inputs;
+    private final List<RoqmeModel.Variable> derivedInputs = new java.util.ArrayList<>();
+    private final Object[] lastDerived;
     private final Decider decider;
     private final VariantSource variants = new VariantSource();
     private final VariantSource blackboard = new VariantSource();
@@ -98,7 +100,11 @@ public final class Simulation {
         }
         for (RoqmeModel.Variable v : setup.roqme().contexts()) {
             contexts.put(v.name(), v);
+            if (v.derived() != null && !v.derived().isNull() && engineContexts.containsKey(v.name())) {
+                derivedInputs.add(v);
+            }
         }
+        lastDerived = new Object[derivedInputs.size()];
         List<String> properties = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
                 .map(RoqmeModel.Belief::name).toList();
         lastEstimates = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
@@ -210,6 +216,7 @@ public final class Simulation {
     /** The provider's due work and ticks, a decision if an input changed, one tick of the tree. */
     private void instant() {
         provider.advanceTo(now);
+        feedDerived();
         while (provider.nextTickTime() <= now) {
             Provider.Tick t = provider.tick();
             double[] est = t.estimates();
@@ -325,6 +332,28 @@ public final class Simulation {
         for (Publication p : setup.world().publications()) {
             if (event.equals(p.event())) {
                 publish(p, Boolean.TRUE, true);
+            }
+        }
+    }
+
+    /**
+     * Derived contexts the engine reads (the hospital's {@code qos.lowBattery}), as the provider
+     * computes them: the live provider publishes them on change (docs/roqme-provider.md), so does this.
+     */
+    private void feedDerived() {
+        for (int i = 0; i < derivedInputs.size(); i++) {
+            RoqmeModel.Variable v = derivedInputs.get(i);
+            Object value = provider.value(v.id());
+            if (value == null || value.equals(lastDerived[i])) {
+                continue;
+            }
+            lastDerived[i] = value;
+            InputSpec in = engineContexts.get(v.name());
+            switch (in.roqmeType()) {
+                case "number" -> inputs.setContext(in, in.type().equals("int") ? (Object) (int) Math.round((Double) value) : value);
+                case "boolean" -> inputs.setContext(in, value);
+                case "enum" -> inputs.setContext(in, Math.max(0, in.literals().indexOf(String.valueOf(value))));
+                default -> { }
             }
         }
     }
