@@ -49,7 +49,9 @@ public final class Decider {
         this.explainer = activity == null ? null : new DecisionExplainer(model, activity);
         Map<String, Object> initial = new LinkedHashMap<>();
         for (VariationPoint vp : model.varpoints()) {
-            if (vp.initial() != null) { // the robot starts with it: applied before any decision
+            // The robot starts with it: applied before any decision. Not a BT port's: the woven tree
+            // reads it from a blackboard key that only a decision writes, so the first one sends it.
+            if (vp.initial() != null && !vp.bindingType().equals("btport")) {
                 applied.put(vp.name(), vp.initial());
                 initial.put(vp.name(), vp.values().get(vp.initial()));
             }
@@ -142,7 +144,8 @@ public final class Decider {
      * Applies a decision: returns what changed, except for parameters (varpoints not woven into the
      * tree as variants, whose preset the executor expects at start-up) no decision has set yet that
      * nothing asks to change (no impact, no applicable rule, no override): they keep their initial
-     * value, or stay unset ({@code null} in the decision). Once a rule has set one, the model's
+     * value, or stay unset ({@code null} in the decision). A BT port's initial value is sent by the
+     * first decision (the tree's blackboard has nothing before). Once a rule has set one, the model's
      * tie-break decides when the rule lets go: back to the preset (or the initial value), else the
      * current value stays.
      */
@@ -157,7 +160,8 @@ public final class Decider {
         List<Change> changes = new ArrayList<>();
         for (int v = 0; v < model.varpoints().size(); v++) {
             VariationPoint vp = model.varpoints().get(v);
-            if (act != null && !act.asked()[v] && !sent.contains(vp.name()) && !vp.bindingType().equals("bt")) {
+            if (act != null && !act.asked()[v] && !sent.contains(vp.name()) && !vp.bindingType().equals("bt")
+                    && !(vp.bindingType().equals("btport") && vp.initial() != null)) {
                 held.add(vp.name());
                 Integer kept = applied.get(vp.name());
                 decisions.set(vp.name(), kept == null ? null : vp.values().get(kept));

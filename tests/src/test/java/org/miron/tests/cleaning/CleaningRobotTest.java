@@ -198,4 +198,21 @@ public class CleaningRobotTest {
         Optional<ParameterChange> back = skills.awaitChange(c -> c.values().path("1").asDouble() == 0.5, 10_000);
         assertTrue("baseSpeed returns to its initial value, history " + skills.history(), back.isPresent());
     }
+
+    /**
+     * A BT port's initial value is not on the robot before a decision: the woven tree reads the port
+     * from a blackboard key only a decision writes. The first decision sends it (a held parameter
+     * would leave the skill unable to read its port), and a rule still changes it.
+     */
+    @Test
+    public void aTreePortsInitialValueIsSentByTheFirstDecision() throws Exception {
+        start("btport");
+        JsonNode first = awaitDecision(x -> true);
+        assertEquals(first.toString(), 0.3, first.path("decisions").path("dockSpeed").asDouble(), 1e-9);
+        assertTrue(first.toString(), first.path("changed").toString().contains("\"dockSpeed\""));
+        assertTrue(first.toString(), !first.path("held").toString().contains("dockSpeed"));
+        occupancy("CROWDED");
+        JsonNode crowded = awaitDecision(x -> x.path("applied").toString().contains("\"people\""));
+        assertTrue(crowded.toString(), crowded.path("decisions").path("dockSpeed").asDouble() <= 0.2 + 1e-9);
+    }
 }
