@@ -25,6 +25,8 @@ public final class JsonSchemaFile {
     public static final JsonSchemaFile IO_JSON = new JsonSchemaFile("docs/io-json.schema.json");
     /** docs/roqme-model.schema.json: the RoQME runtime model's contract with the provider. */
     public static final JsonSchemaFile ROQME_MODEL = new JsonSchemaFile("docs/roqme-model.schema.json");
+    /** docs/dds-bridge.schema.json: the configuration of {@code miron dds-bridge}. */
+    public static final JsonSchemaFile DDS_BRIDGE = new JsonSchemaFile("docs/dds-bridge.schema.json");
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private final String relative;

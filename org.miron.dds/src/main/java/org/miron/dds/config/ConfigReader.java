@@ -100,13 +100,14 @@ public final class ConfigReader {
         if (template == null || type.startsWith("Roqme")) {
             throw error(p + "/type", "unknown message type " + type + " (a ROS 2 type as pkg/Name, e.g. sensor_msgs/BatteryState)");
         }
-        String field = text(c, p, "field", "data");
-        List<Object> path = FieldPath.parse(field);
+        boolean event = c.has("as") && "event".equals(c.get("as").asText());
+        String field = text(c, p, "field", event ? "" : "data");
+        List<Object> path = field.isEmpty() ? List.of() : FieldPath.parse(field);
         if (path == null) {
             throw error(p + "/field", "not a field path: \"" + field + "\" (names and [index], e.g. header.stamp.sec or cell_voltage[0])");
         }
         JsonNode leaf = FieldPath.resolveTemplate(template, path);
-        if (leaf == null || leaf.isContainerNode()) {
+        if (leaf == null || (leaf.isContainerNode() && !field.isEmpty())) {
             throw error(p + "/field", type + " has no value field \"" + field + "\"; its fields: " + FieldPath.describe(template));
         }
         String context = required(c, p, "context");
@@ -114,15 +115,15 @@ public final class ConfigReader {
             throw error(p + "/context", "a RoQME context name is an identifier, got \"" + context + "\"");
         }
         ContextType inferred = leaf.isNumber() ? ContextType.NUMBER : leaf.isBoolean() ? ContextType.BOOLEAN : ContextType.ENUM;
-        ContextType as = inferred;
-        if (c.has("as")) {
+        ContextType as = event ? ContextType.EVENT : inferred;
+        if (c.has("as") && !event) {
             String a = required(c, p, "as");
             try {
                 as = ContextType.valueOf(a.toUpperCase(java.util.Locale.ROOT));
             } catch (IllegalArgumentException e) {
                 throw error(p + "/as", "must be number, boolean, enum or event, got \"" + a + "\"");
             }
-            if (as != ContextType.EVENT && as != inferred && !(as == ContextType.NUMBER && leaf.isTextual())) {
+            if (as != inferred && !(as == ContextType.NUMBER && leaf.isTextual())) {
                 throw error(p + "/as", "field \"" + field + "\" of " + type + " holds a " + inferred.json() + ", not a " + as.json());
             }
         }
