@@ -107,30 +107,27 @@ public final class IhmcTransport implements DdsTransport {
 
             @Override
             public void onNewDataMessage(Subscriber<T> s) {
-                while (true) {
-                    T data = type.createData();
-                    boolean got;
-                    try {
-                        got = s.takeNextData(data, info);
-                    } catch (RuntimeException e) {
-                        listener.undecodable("cannot decode a " + spec.type() + " on " + spec.name() + ": " + e.getMessage());
-                        continue;
-                    }
-                    if (!got) {
-                        return;
-                    }
-                    if (closed.get()) {
-                        continue;
-                    }
-                    ObjectNode json;
-                    try {
-                        json = JsonOut.of(type, data);
-                    } catch (RuntimeException e) {
-                        listener.undecodable("cannot read a " + spec.type() + " on " + spec.name() + ": " + e);
-                        continue;
-                    }
-                    listener.sample(json);
+                // One sample per call: Fast-DDS calls once per arriving sample, and a take on an
+                // empty reader prints a native error line each time.
+                T data = type.createData();
+                boolean got;
+                try {
+                    got = s.takeNextData(data, info);
+                } catch (RuntimeException e) {
+                    listener.undecodable("cannot decode a " + spec.type() + " on " + spec.name() + ": " + e.getMessage());
+                    return;
                 }
+                if (!got || closed.get()) {
+                    return;
+                }
+                ObjectNode json;
+                try {
+                    json = JsonOut.of(type, data);
+                } catch (RuntimeException e) {
+                    listener.undecodable("cannot read a " + spec.type() + " on " + spec.name() + ": " + e);
+                    return;
+                }
+                listener.sample(json);
             }
 
             @Override
