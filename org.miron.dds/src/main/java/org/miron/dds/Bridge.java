@@ -72,8 +72,13 @@ public final class Bridge implements AutoCloseable {
         this.bus = new BusClient("dds-bridge", busIn, busOut, subscriptions, this::onBus);
     }
 
-    /** Creates every DDS reader and writer, then connects to the bus. */
+    /**
+     * Creates the writers, connects to the bus (decisions and estimates flow from here on), then
+     * creates the readers. Each DDS entity costs the library an XML profile round trip (about half
+     * a second on a loaded machine), so the outputs come first.
+     */
     public Bridge start() throws DdsException {
+        long t0 = System.nanoTime();
         dds.onMatching(m -> LOG.info("dds-bridge: " + m));
         for (DecisionMapping d : config.decisions()) {
             DdsTransport.Writer w = dds.writer(new TopicSpec(RosNames.topic(d.topic()), d.type(), d.qos(), List.of()));
@@ -85,27 +90,29 @@ public final class Bridge implements AutoCloseable {
             entities.add(w);
             estimateWriters.add(w);
         }
+        RoqmeTopics r = config.roqme();
+        TopicSpec est = r == null ? null : new TopicSpec("RoqmeEstimate", "RoqmeEstimate", r.qos(), List.of(r.partition()));
+        if (r != null && r.estimates().equals("out")) {
+            roqmeEstimates = dds.writer(est);
+            entities.add(roqmeEstimates);
+        }
+        bus.start();
+        timer.scheduleAtFixedRate(this::publishStatus, 0, statusIntervalMs, TimeUnit.MILLISECONDS);
         for (ContextMapping c : config.contexts()) {
             TopicSpec spec = new TopicSpec(RosNames.topic(c.topic()), c.type(), c.qos(), List.of());
             entities.add(dds.reader(spec, listener(spec.name(), msg -> ContextConversion.fromRos(c, msg, System.currentTimeMillis()))));
         }
-        RoqmeTopics r = config.roqme();
         if (r != null) {
             for (String struct : r.contextTopics()) {
                 TopicSpec spec = new TopicSpec(struct, struct, r.qos(), List.of(r.partition()));
                 entities.add(dds.reader(spec, listener(struct, msg -> ContextConversion.fromRoqme(struct, r.namespace(), msg,
                         System.currentTimeMillis()))));
             }
-            TopicSpec est = new TopicSpec("RoqmeEstimate", "RoqmeEstimate", r.qos(), List.of(r.partition()));
-            if (r.estimates().equals("out")) {
-                roqmeEstimates = dds.writer(est);
-                entities.add(roqmeEstimates);
-            } else if (r.estimates().equals("in")) {
+            if (r.estimates().equals("in")) {
                 entities.add(dds.reader(est, estimateListener(r.namespace())));
             }
         }
-        bus.start();
-        timer.scheduleAtFixedRate(this::publishStatus, 0, statusIntervalMs, TimeUnit.MILLISECONDS);
+        LOG.info("dds-bridge: " + entities.size() + " DDS readers and writers ready in " + (System.nanoTime() - t0) / 1_000_000 + " ms");
         return this;
     }
 
@@ -204,6 +211,7 @@ public final class Bridge implements AutoCloseable {
             }
             write(decisionWriters.get(d.varpoint()), data, "decisionsOut");
             lastDecision.put(d.varpoint(), v);
+            LOG.info("dds-bridge: " + d.varpoint() + " = " + data + " on " + RosNames.topic(d.topic()));
         }
     }
 
