@@ -46,6 +46,8 @@ public final class Bridge implements AutoCloseable {
     private final BusClient bus;
     private final BridgeCounters counters = new BridgeCounters();
     private final List<AutoCloseable> entities = new ArrayList<>();
+    /** Per DDS topic name, how many remote endpoints each of our readers and writers on it has matched. */
+    private final Map<String, List<java.util.function.IntSupplier>> matching = new java.util.concurrent.ConcurrentHashMap<>();
     private final Map<String, DdsTransport.Writer> decisionWriters = new LinkedHashMap<>();
     private final Map<String, JsonNode> lastDecision = new LinkedHashMap<>(); // bus thread only
     private final List<DdsTransport.Writer> estimateWriters = new ArrayList<>();
@@ -81,39 +83,57 @@ public final class Bridge implements AutoCloseable {
         long t0 = System.nanoTime();
         dds.onMatching(m -> LOG.info("dds-bridge: " + m));
         for (DecisionMapping d : config.decisions()) {
-            DdsTransport.Writer w = dds.writer(new TopicSpec(RosNames.topic(d.topic()), d.type(), d.qos(), List.of()));
-            entities.add(w);
+            DdsTransport.Writer w = track(RosNames.topic(d.topic()), dds.writer(new TopicSpec(RosNames.topic(d.topic()), d.type(), d.qos(), List.of())));
             decisionWriters.put(d.varpoint(), w);
         }
         for (EstimateMapping e : config.estimates()) {
-            DdsTransport.Writer w = dds.writer(new TopicSpec(RosNames.topic(e.topic()), "std_msgs/Float64", e.qos(), List.of()));
-            entities.add(w);
+            DdsTransport.Writer w = track(RosNames.topic(e.topic()), dds.writer(new TopicSpec(RosNames.topic(e.topic()), "std_msgs/Float64",
+                    e.qos(), List.of())));
             estimateWriters.add(w);
         }
         RoqmeTopics r = config.roqme();
         TopicSpec est = r == null ? null : new TopicSpec("RoqmeEstimate", "RoqmeEstimate", r.qos(), List.of(r.partition()));
         if (r != null && r.estimates().equals("out")) {
-            roqmeEstimates = dds.writer(est);
-            entities.add(roqmeEstimates);
+            roqmeEstimates = track(est.name(), dds.writer(est));
         }
         bus.start();
         timer.scheduleAtFixedRate(this::publishStatus, 0, statusIntervalMs, TimeUnit.MILLISECONDS);
         for (ContextMapping c : config.contexts()) {
             TopicSpec spec = new TopicSpec(RosNames.topic(c.topic()), c.type(), c.qos(), List.of());
-            entities.add(dds.reader(spec, listener(spec.name(), msg -> ContextConversion.fromRos(c, msg, System.currentTimeMillis()))));
+            track(spec.name(), dds.reader(spec, listener(spec.name(), msg -> ContextConversion.fromRos(c, msg, System.currentTimeMillis()))));
         }
         if (r != null) {
             for (String struct : r.contextTopics()) {
                 TopicSpec spec = new TopicSpec(struct, struct, r.qos(), List.of(r.partition()));
-                entities.add(dds.reader(spec, listener(struct, msg -> ContextConversion.fromRoqme(struct, r.namespace(), msg,
+                track(struct, dds.reader(spec, listener(struct, msg -> ContextConversion.fromRoqme(struct, r.namespace(), msg,
                         System.currentTimeMillis()))));
             }
             if (r.estimates().equals("in")) {
-                entities.add(dds.reader(est, estimateListener(r.namespace())));
+                track(est.name(), dds.reader(est, estimateListener(r.namespace())));
             }
         }
         LOG.info("dds-bridge: " + entities.size() + " DDS readers and writers ready in " + (System.nanoTime() - t0) / 1_000_000 + " ms");
         return this;
+    }
+
+    private DdsTransport.Writer track(String topic, DdsTransport.Writer w) {
+        entities.add(w);
+        matching.computeIfAbsent(topic, t -> new java.util.concurrent.CopyOnWriteArrayList<>()).add(w::matched);
+        return w;
+    }
+
+    private void track(String topic, DdsTransport.Reader r) {
+        entities.add(r);
+        matching.computeIfAbsent(topic, t -> new java.util.concurrent.CopyOnWriteArrayList<>()).add(r::matched);
+    }
+
+    /**
+     * The fewest remote endpoints any of the bridge's readers and writers on the DDS topic (as on
+     * the wire: {@code rt/battery_state}, {@code RoqmeEstimate}) has matched now; 0 for a topic it does not use.
+     */
+    public int matched(String ddsTopic) {
+        List<java.util.function.IntSupplier> l = matching.get(ddsTopic);
+        return l == null ? 0 : l.stream().mapToInt(java.util.function.IntSupplier::getAsInt).min().orElse(0);
     }
 
     /** Converts a sample into a bus message body, or rejects it. */

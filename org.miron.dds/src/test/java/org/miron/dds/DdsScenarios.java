@@ -45,6 +45,17 @@ public final class DdsScenarios {
         return b;
     }
 
+    /** Waits until the bridge's own endpoints on the topic have matched the peer (matching is seen on each side at its own time). */
+    static void awaitMatched(Bridge b, String ddsTopic) throws InterruptedException {
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (b.matched(ddsTopic) < 1) {
+            if (System.currentTimeMillis() > end) {
+                throw new AssertionError("the bridge never matched the peer on " + ddsTopic);
+            }
+            Thread.sleep(20);
+        }
+    }
+
     private static LiveProvider provider(Endpoints ep) throws Exception {
         CompiledModel m = Compiler.compile(ModelReader.parse("intralogistics.roqme.json", TestModels.roqme("intralogistics.roqme.json")),
                 new HashMap<>());
@@ -69,6 +80,7 @@ public final class DdsScenarios {
                 assertNotNull("the current decision reaches the robot",
                         robot.awaitSample("task", d -> d.path("data").asText().equals("pickDeliverCharge")));
                 robot.awaitMatched("battery");
+                awaitMatched(b, "rt/battery_state");
                 robot.write("battery", "{\"header\":{\"frame_id\":\"base\"},\"percentage\":0.2,\"cell_voltage\":[3.6,3.7]}");
                 JsonNode ctx = roqme.await(Topics.CONTEXT, c -> c.path("name").asText().equals("BatteryLevel")
                         && c.path("value").asDouble() < 21, TIMEOUT);
@@ -105,6 +117,7 @@ public final class DdsScenarios {
                 tools.endpoint("writer", "enum", "RoqmeEnumContext", "RoqmeEnumContext", partition);
                 tools.endpoint("reader", "est", "RoqmeEstimate", "RoqmeEstimate", partition);
                 tools.awaitMatched("ctx");
+                awaitMatched(out, "RoqmeDoubleContext");
                 tools.write("ctx", "{\"name\":\"BatteryLevel\",\"value\":[42.5]}");
                 JsonNode c = probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("BatteryLevel"), TIMEOUT);
                 assertNotNull("RoqmeDoubleContext -> roqme.context", c);
@@ -112,6 +125,7 @@ public final class DdsScenarios {
                 assertEquals("number", c.path("type").asText());
                 assertEquals("Intralogistics", c.path("namespace").asText());
                 tools.awaitMatched("enum");
+                awaitMatched(out, "RoqmeEnumContext");
                 tools.write("enum", "{\"name\":\"FreeSpace\",\"value\":[\"HIGH\"]}");
                 JsonNode e = probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("FreeSpace"), TIMEOUT);
                 assertNotNull("RoqmeEnumContext -> roqme.context", e);
@@ -119,6 +133,7 @@ public final class DdsScenarios {
                 assertEquals("HIGH", e.path("value").asText());
                 tools.write("ctx", "{\"name\":\"BatteryLevel\",\"value\":[]}"); // no value: dropped
                 tools.awaitMatched("est");
+                awaitMatched(out, "RoqmeEstimate");
                 input.publish(Topics.ESTIMATE, "{\"name\":\"power_autonomy\",\"namespace\":\"Intralogistics\",\"value\":0.25,\"time\":1}");
                 JsonNode est = tools.awaitSample("est", x -> x.path("name").asText().equals("power_autonomy"));
                 assertNotNull("roqme.estimate -> RoqmeEstimate", est);
@@ -133,6 +148,7 @@ public final class DdsScenarios {
             try (Bridge in = bridge("{\"roqme\": {\"namespace\": \"Intralogistics\", \"contexts\": false, \"estimates\": \"in\"}}", ep)) {
                 tools.endpoint("writer", "estw", "RoqmeEstimate", "RoqmeEstimate", partition);
                 tools.awaitMatched("estw");
+                awaitMatched(in, "RoqmeEstimate");
                 tools.write("estw", "{\"name\":\"safety\",\"value\":0.75}");
                 JsonNode s = probe.await(Topics.ESTIMATE, x -> x.path("name").asText().equals("safety"), TIMEOUT);
                 assertNotNull("RoqmeEstimate -> roqme.estimate (the original provider feeding our engine)", s);
@@ -165,6 +181,8 @@ public final class DdsScenarios {
             robot.endpoint("writer", "distance", "rt/distance", "std_msgs/String", "");
             robot.awaitMatched("battery");
             robot.awaitMatched("distance");
+            awaitMatched(b, "rt/battery_state");
+            awaitMatched(b, "rt/distance");
             robot.write("battery", "{\"percentage\":NaN,\"cell_voltage\":[3.6]}"); // NaN; and no second cell
             robot.write("distance", "{\"data\":\"far away\"}"); // not a number
             robot.write("distance", "{\"data\":\"1.5\"}"); // a number in a string: fine
@@ -207,6 +225,7 @@ public final class DdsScenarios {
                     robot.endpoint("writer", "battery", "rt/battery_state", "sensor_msgs/BatteryState", "");
                     assertNotNull("matched again: the current decision", robot.awaitSample("task", d -> d.path("data").asText().equals("dock")));
                     robot.awaitMatched("battery");
+                    awaitMatched(second, "rt/battery_state");
                     robot.write("battery", "{\"percentage\":0.33}");
                     assertNotNull("matched again: its contexts reach the bus", contexts.await(Topics.CONTEXT,
                             x -> Math.abs(x.path("value").asDouble() - 33) < 1e-6, TIMEOUT));
