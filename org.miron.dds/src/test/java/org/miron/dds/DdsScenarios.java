@@ -35,7 +35,9 @@ public final class DdsScenarios {
             {"domain": 0,
              "contexts": [{"topic": "battery_state", "type": "sensor_msgs/BatteryState", "field": "percentage",
                            "scale": 100, "context": "BatteryLevel", "namespace": "Intralogistics"}],
-             "decisions": [{"varpoint": "task", "topic": "miron/task"}]}
+             "decisions": [{"varpoint": "task", "topic": "miron/task"},
+                           {"varpoint": "maxVelocity", "topic": "miron/max_velocity", "type": "std_msgs/Float64"}],
+             "estimates": [{"metric": "power_autonomy", "namespace": "Intralogistics", "topic": "miron/power_autonomy"}]}
             """;
 
     static Bridge bridge(String config, Endpoints ep) throws Exception {
@@ -98,6 +100,17 @@ public final class DdsScenarios {
                     JsonNode first = late.awaitSample("task", d -> true);
                     assertNotNull("the late node gets the current decision", first);
                     assertEquals("dock", first.path("data").asText());
+                    // a numeric varpoint as std_msgs/Float64, the metric as std_msgs/Float64
+                    late.endpoint("reader", "vel", "rt/miron/max_velocity", "std_msgs/Float64", ",\"durability\":\"transient_local\",\"depth\":1");
+                    late.endpoint("reader", "pa", "rt/miron/power_autonomy", "std_msgs/Float64", ",\"durability\":\"transient_local\",\"depth\":1");
+                    JsonNode vel = late.awaitSample("vel", d -> true);
+                    assertNotNull("maxVelocity reaches the late node", vel);
+                    List<BusProbe.Message> decisions = f.probe.messages(Topics.DECISION);
+                    JsonNode decided = decisions.get(decisions.size() - 1).body(); // the current decision
+                    assertEquals(decided.path("decisions").path("maxVelocity").asDouble(), vel.path("data").asDouble(), 0);
+                    JsonNode pa = late.awaitSample("pa", d -> true);
+                    assertNotNull("power_autonomy reaches the late node", pa);
+                    assertTrue(pa.toString(), pa.path("data").asDouble() >= 0 && pa.path("data").asDouble() <= 1);
                 }
                 assertEquals(0, b.count("malformedInput"));
             }
