@@ -27,6 +27,8 @@ public final class JsonSchemaFile {
     public static final JsonSchemaFile ROQME_MODEL = new JsonSchemaFile("docs/roqme-model.schema.json");
     /** docs/world.schema.json: the structure of a world file for `miron simulate`. */
     public static final JsonSchemaFile WORLD = new JsonSchemaFile("docs/world.schema.json");
+    /** docs/dds-bridge.schema.json: the configuration of {@code miron dds-bridge}. */
+    public static final JsonSchemaFile DDS_BRIDGE = new JsonSchemaFile("docs/dds-bridge.schema.json");
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private final String relative;

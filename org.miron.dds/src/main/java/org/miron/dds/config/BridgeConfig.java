@@ -1,0 +1,48 @@
+package org.miron.dds.config;
+
+import java.net.InetAddress;
+import java.util.List;
+import org.miron.dds.transport.Qos;
+
+/**
+ * A bridge configuration (docs/dds.md, docs/dds-bridge.schema.json), checked: every type known,
+ * every field path present in its type, every name well-formed.
+ */
+public record BridgeConfig(int domain, String name, List<InetAddress> interfaces, List<ContextMapping> contexts,
+        List<DecisionMapping> decisions, List<EstimateMapping> estimates, RoqmeTopics roqme) {
+
+    /** The RoQME context type of a value: how {@code roqme.context}'s {@code type} names it. */
+    public enum ContextType {
+        NUMBER, BOOLEAN, ENUM, EVENT;
+
+        public String json() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+    }
+
+    /**
+     * A ROS 2 topic feeding a RoQME context.
+     *
+     * @param path  the field, as names into nested messages and indices into sequences
+     *              ({@code percentage}, {@code header.stamp.sec}, {@code cell_voltage[0]})
+     * @param scale multiplies a number (1 when absent)
+     */
+    public record ContextMapping(String topic, String type, String field, List<Object> path, double scale, String context,
+            String namespace, ContextType as, Qos qos) {
+    }
+
+    /** A varpoint's decision published on a ROS 2 topic ({@code std_msgs/String}, {@code Float64} or {@code Bool}). */
+    public record DecisionMapping(String varpoint, String topic, String type, Qos qos) {
+    }
+
+    /** A metric's {@code roqme.estimate} published as {@code std_msgs/Float64}. */
+    public record EstimateMapping(String metric, String namespace, String topic, Qos qos) {
+    }
+
+    /**
+     * RoQME's own DDS topics: its context topics into {@code roqme.context}, and {@code RoqmeEstimate}
+     * out of {@code roqme.estimate} ("out"), into it ("in") or not at all ("none").
+     */
+    public record RoqmeTopics(String partition, String namespace, List<String> contextTopics, String estimates, Qos qos) {
+    }
+}

@@ -1,0 +1,225 @@
+package org.miron.dds.transport;
+
+import com.eprosima.xmlschemas.fastrtps_profiles.DurabilityQosKindPolicyType;
+import com.eprosima.xmlschemas.fastrtps_profiles.HistoryQosKindPolicyType;
+import com.eprosima.xmlschemas.fastrtps_profiles.ReliabilityQosKindPolicyType;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
+import us.ihmc.pubsub.Domain;
+import us.ihmc.pubsub.DomainFactory;
+import us.ihmc.pubsub.TopicDataType;
+import us.ihmc.pubsub.attributes.CommonAttributes;
+import us.ihmc.pubsub.attributes.ParticipantProfile;
+import us.ihmc.pubsub.attributes.PublisherAttributes;
+import us.ihmc.pubsub.attributes.SubscriberAttributes;
+import us.ihmc.pubsub.common.MatchingInfo;
+import us.ihmc.pubsub.common.SampleInfo;
+import us.ihmc.pubsub.participant.Participant;
+import us.ihmc.pubsub.publisher.Publisher;
+import us.ihmc.pubsub.subscriber.Subscriber;
+import us.ihmc.pubsub.subscriber.SubscriberListener;
+import us.ihmc.ros2.ROS2NodeInterface;
+
+/**
+ * {@link DdsTransport} on IHMC's ROS 2 library (eProsima Fast-DDS through JNI). One participant
+ * bound to the given addresses (the UDPv4 transport's whitelist, no shared memory, as the library's
+ * ROS 2 nodes do). Used at the level of its pub-sub API rather than its ROS 2 node: a node puts its
+ * namespace into the DDS partition (docs/dds.md), while ROS 2 topics need none and RoQME's need
+ * theirs; topic names and partitions are set here exactly as {@link TopicSpec} says.
+ */
+public final class IhmcTransport implements DdsTransport {
+    private final Domain domain;
+    private final Participant participant;
+    private final List<Consumer<String>> matchingListeners = new CopyOnWriteArrayList<>();
+
+    /**
+     * @param domainId   the DDS domain (ROS_DOMAIN_ID)
+     * @param name       the participant's name, as other DDS tools show it
+     * @param interfaces the addresses to bind (127.0.0.1: this machine only)
+     */
+    public IhmcTransport(int domainId, String name, List<InetAddress> interfaces) throws DdsException {
+        try {
+            domain = DomainFactory.getDomain(DomainFactory.PubSubImplementation.FAST_RTPS);
+            ParticipantProfile profile = ROS2NodeInterface.createParticipantAttributes(domainId, false,
+                    interfaces.toArray(new InetAddress[0]));
+            profile.name(name);
+            participant = domain.createParticipant(profile);
+        } catch (IOException | RuntimeException | LinkageError e) {
+            throw new DdsException("cannot create the DDS participant on domain " + domainId + ": " + e, e);
+        }
+    }
+
+    /** The types this transport can carry, without a participant (for checking a configuration). */
+    public static final TypeCatalog CATALOG = new TypeCatalog() {
+        @Override
+        public ObjectNode template(String type) {
+            TopicDataType<?> t = Types.lookup(type);
+            return t == null ? null : empty(t);
+        }
+    };
+
+    private static <T> ObjectNode empty(TopicDataType<T> t) {
+        return JsonOut.of(t, t.createData());
+    }
+
+    private TopicDataType<?> type(String name) throws DdsException {
+        TopicDataType<?> t = Types.lookup(name);
+        if (t == null) {
+            throw new DdsException("unknown message type " + name);
+        }
+        synchronized (this) {
+            if (domain.getRegisteredType(participant, t.getName()) == null) {
+                domain.registerType(participant, t);
+            }
+        }
+        return t;
+    }
+
+    private static <A extends CommonAttributes<A>> A apply(A a, TopicDataType<?> type, TopicSpec spec) {
+        a.topicDataType(type);
+        a.topicName(spec.name());
+        a.reliabilityKind(spec.qos().reliable() ? ReliabilityQosKindPolicyType.RELIABLE : ReliabilityQosKindPolicyType.BEST_EFFORT);
+        a.durabilityKind(spec.qos().transientLocal() ? DurabilityQosKindPolicyType.TRANSIENT_LOCAL : DurabilityQosKindPolicyType.VOLATILE);
+        a.historyQosPolicyKind(HistoryQosKindPolicyType.KEEP_LAST);
+        a.historyDepth(spec.qos().depth());
+        if (!spec.partitions().isEmpty()) {
+            a.partitions(spec.partitions());
+        }
+        return a;
+    }
+
+    @Override
+    public Reader reader(TopicSpec spec, Listener listener) throws DdsException {
+        return reader(type(spec.type()), spec, listener);
+    }
+
+    private <T> Reader reader(TopicDataType<T> type, TopicSpec spec, Listener listener) throws DdsException {
+        AtomicInteger matched = new AtomicInteger();
+        java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
+        SubscriberListener<T> l = new SubscriberListener<>() {
+            private final SampleInfo info = new SampleInfo();
+
+            @Override
+            public void onNewDataMessage(Subscriber<T> s) {
+                // One sample per call: Fast-DDS calls once per arriving sample, and a take on an
+                // empty reader prints a native error line each time.
+                T data = type.createData();
+                boolean got;
+                try {
+                    got = s.takeNextData(data, info);
+                } catch (RuntimeException e) {
+                    listener.undecodable("cannot decode a " + spec.type() + " on " + spec.name() + ": " + e.getMessage());
+                    return;
+                }
+                if (!got || closed.get()) {
+                    return;
+                }
+                ObjectNode json;
+                try {
+                    json = JsonOut.of(type, data);
+                } catch (RuntimeException e) {
+                    listener.undecodable("cannot read a " + spec.type() + " on " + spec.name() + ": " + e);
+                    return;
+                }
+                listener.sample(json);
+            }
+
+            @Override
+            public void onSubscriptionMatched(Subscriber<T> s, MatchingInfo info) {
+                count(matched, info, "reader " + spec.name());
+            }
+        };
+        try {
+            Subscriber<T> sub = domain.createSubscriber(participant, apply(SubscriberAttributes.create(), type, spec), l);
+            return new Reader() {
+                @Override
+                public int matched() {
+                    return matched.get();
+                }
+
+                @Override
+                public void close() {
+                    closed.set(true); // the native delete can hang: the participant's removal takes it along
+                }
+            };
+        } catch (IOException | RuntimeException e) {
+            throw new DdsException("cannot subscribe to " + spec.name() + " (" + spec.type() + "): " + e.getMessage(), e);
+        }
+    }
+
+    @Override
+    public Writer writer(TopicSpec spec) throws DdsException {
+        return writer(type(spec.type()), spec);
+    }
+
+    private <T> Writer writer(TopicDataType<T> type, TopicSpec spec) throws DdsException {
+        AtomicInteger matched = new AtomicInteger();
+        java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
+        try {
+            Publisher pub = domain.createPublisher(participant, apply(PublisherAttributes.create(), type, spec),
+                    (p, info) -> count(matched, info, "writer " + spec.name()));
+            return new Writer() {
+                @Override
+                public synchronized void write(JsonNode message) {
+                    if (closed.get()) {
+                        throw new IllegalStateException("writer on " + spec.name() + " is closed");
+                    }
+                    try {
+                        pub.write(JsonIn.fill(type, message));
+                    } catch (IOException e) {
+                        throw new IllegalStateException("cannot write to " + spec.name() + ": " + e.getMessage(), e);
+                    }
+                }
+
+                @Override
+                public int matched() {
+                    return matched.get();
+                }
+
+                @Override
+                public void close() {
+                    closed.set(true);
+                }
+            };
+        } catch (IOException | RuntimeException e) {
+            throw new DdsException("cannot publish on " + spec.name() + " (" + spec.type() + "): " + e.getMessage(), e);
+        }
+    }
+
+    private void count(AtomicInteger matched, MatchingInfo info, String what) {
+        int n = info.getStatus() == MatchingInfo.MatchingStatus.MATCHED_MATCHING ? matched.incrementAndGet()
+                : Math.max(0, matched.decrementAndGet());
+        for (Consumer<String> l : matchingListeners) {
+            l.accept(what + (info.getStatus() == MatchingInfo.MatchingStatus.MATCHED_MATCHING ? " matched" : " unmatched")
+                    + ", " + n + " now");
+        }
+    }
+
+    @Override
+    public void onMatching(Consumer<String> listener) {
+        matchingListeners.add(listener);
+    }
+
+    /**
+     * Removes the participant (and with it every reader and writer). Fast-DDS's native delete can
+     * block for good while a listener callback is under way (seen in the tests), so it runs on a
+     * daemon thread that is given 5 s: a process that exits does not wait for it.
+     */
+    @Override
+    public void close() {
+        Thread t = new Thread(() -> domain.removeParticipant(participant), "dds-close");
+        t.setDaemon(true);
+        t.start();
+        try {
+            t.join(5000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,37 @@
+package org.miron.dds.transport;
+
+import java.lang.reflect.InvocationTargetException;
+import us.ihmc.pubsub.TopicDataType;
+
+/**
+ * Message types by name: a ROS 2 type {@code pkg/Name} as the IHMC library ships it (class
+ * {@code pkg.msg.dds.NamePubSubType}: std_msgs, sensor_msgs, geometry_msgs, nav_msgs ...), or one of
+ * RoQME's own types by its IDL struct name ({@code RoqmeEstimate}, {@code RoqmeDoubleContext} ...).
+ */
+final class Types {
+    private Types() {
+    }
+
+    /** A fresh type instance (each holds its own CDR buffers), or null for an unknown name. */
+    static TopicDataType<?> lookup(String name) {
+        RoqmeType.Kind k = RoqmeType.Kind.of(name);
+        if (k != null) {
+            return new RoqmeType(k);
+        }
+        int slash = name.indexOf('/');
+        if (slash <= 0 || slash != name.lastIndexOf('/') || !name.matches("[a-z][a-z0-9_]*/[A-Z][A-Za-z0-9]*")) {
+            return null;
+        }
+        String cls = name.substring(0, slash) + ".msg.dds." + name.substring(slash + 1) + "PubSubType";
+        try {
+            Class<?> c = Class.forName(cls, true, Types.class.getClassLoader());
+            if (!TopicDataType.class.isAssignableFrom(c)) {
+                return null;
+            }
+            return (TopicDataType<?>) c.getDeclaredConstructor().newInstance();
+        } catch (ClassNotFoundException | NoSuchMethodException | InstantiationException | IllegalAccessException
+                | InvocationTargetException | LinkageError e) {
+            return null;
+        }
+    }
+}

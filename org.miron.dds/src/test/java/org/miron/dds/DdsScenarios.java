@@ -1,0 +1,251 @@
+package org.miron.dds;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertNotNull;
+import static org.junit.Assert.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import org.miron.dds.config.BridgeConfig;
+import org.miron.dds.config.ConfigReader;
+import org.miron.dds.transport.IhmcTransport;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.broker.Broker;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.roqme.LiveProvider;
+import org.miron.runtime.roqme.expr.CompiledModel;
+import org.miron.runtime.roqme.expr.Compiler;
+import org.miron.runtime.roqme.model.ModelReader;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.EngineFixture;
+import org.miron.testkit.runtime.TestModels;
+
+/**
+ * The bridge against an independent DDS implementation (Cyclone DDS, dds_peer.py) with the real
+ * broker, engine and RoQME provider. Each public method is one scenario, run by {@link NetnsMain}
+ * in a private network namespace (DdsBridgeTest); every wait is on an event (a match, a sample, a
+ * bus message), none on time alone.
+ */
+public final class DdsScenarios {
+    static final long TIMEOUT = 60_000;
+    private static final String LOOP_CONFIG = """
+            {"domain": 0,
+             "contexts": [{"topic": "battery_state", "type": "sensor_msgs/BatteryState", "field": "percentage",
+                           "scale": 100, "context": "BatteryLevel", "namespace": "Intralogistics"}],
+             "decisions": [{"varpoint": "task", "topic": "miron/task"},
+                           {"varpoint": "maxVelocity", "topic": "miron/max_velocity", "type": "std_msgs/Float64"}],
+             "estimates": [{"metric": "power_autonomy", "namespace": "Intralogistics", "topic": "miron/power_autonomy"}]}
+            """;
+
+    static Bridge bridge(String config, Endpoints ep) throws Exception {
+        BridgeConfig c = ConfigReader.read(config, IhmcTransport.CATALOG);
+        Bridge b = new Bridge(c, new IhmcTransport(c.domain(), c.name(), c.interfaces()), ep.busIn(), ep.busOut(), 500).start();
+        assertTrue("the bridge reaches the broker", b.awaitReady(TIMEOUT));
+        return b;
+    }
+
+    /** Waits until the bridge's own endpoints on the topic have matched the peer (matching is seen on each side at its own time). */
+    static void awaitMatched(Bridge b, String ddsTopic) throws InterruptedException {
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (b.matched(ddsTopic) < 1) {
+            if (System.currentTimeMillis() > end) {
+                throw new AssertionError("the bridge never matched the peer on " + ddsTopic);
+            }
+            Thread.sleep(20);
+        }
+    }
+
+    private static LiveProvider provider(Endpoints ep) throws Exception {
+        CompiledModel m = Compiler.compile(ModelReader.parse("intralogistics.roqme.json", TestModels.roqme("intralogistics.roqme.json")),
+                new HashMap<>());
+        LiveProvider p = new LiveProvider(m, 100, 5000, ep.busIn(), ep.busOut()).start();
+        assertTrue(p.awaitSubscribed(TIMEOUT));
+        return p;
+    }
+
+    /**
+     * The loop: a BatteryState from the robot moves the provider's power_autonomy, the engine
+     * decides task = dock, the robot receives it on miron/task; a node that starts afterwards gets
+     * the current decision (transient-local).
+     */
+    public void batteryMovesTheMetricAndTheDecision(Path dir) throws Exception {
+        try (EngineFixture f = new EngineFixture(dir); BusProbe roqme = new BusProbe(f.endpoints.busOut(), "roqme.")) {
+            f.startAll(); // testbot: task = dock when power_autonomy < 0.3; BatteryLevel is 50 now
+            try (LiveProvider p = provider(f.endpoints); Bridge b = bridge(LOOP_CONFIG, f.endpoints);
+                    CyclonePeer robot = new CyclonePeer(dir)) {
+                robot.endpoint("reader", "task", "rt/miron/task", "std_msgs/String", ",\"durability\":\"transient_local\",\"depth\":1");
+                robot.endpoint("writer", "battery", "rt/battery_state", "sensor_msgs/BatteryState", "");
+                robot.awaitMatched("task");
+                assertNotNull("the current decision reaches the robot",
+                        robot.awaitSample("task", d -> d.path("data").asText().equals("pickDeliverCharge")));
+                robot.awaitMatched("battery");
+                awaitMatched(b, "rt/battery_state");
+                robot.write("battery", "{\"header\":{\"frame_id\":\"base\"},\"percentage\":0.2,\"cell_voltage\":[3.6,3.7]}");
+                JsonNode ctx = roqme.await(Topics.CONTEXT, c -> c.path("name").asText().equals("BatteryLevel")
+                        && c.path("value").asDouble() < 21, TIMEOUT);
+                assertNotNull("roqme.context BatteryLevel from the robot's battery_state", ctx);
+                assertEquals(20.0, ctx.path("value").asDouble(), 1e-9);
+                assertEquals("number", ctx.path("type").asText());
+                assertEquals("Intralogistics", ctx.path("namespace").asText());
+                assertNotNull("the provider's power_autonomy falls", roqme.await(Topics.ESTIMATE,
+                        e -> e.path("name").asText().equals("power_autonomy") && e.path("value").asDouble() < 0.3, TIMEOUT));
+                assertNotNull("the engine decides dock", f.awaitVariant("task", "dock"));
+                assertNotNull("the robot receives dock", robot.awaitSample("task", d -> d.path("data").asText().equals("dock")));
+                // a node that starts late (a Nav2 selector) gets the current value at once
+                try (CyclonePeer late = new CyclonePeer(dir)) {
+                    late.endpoint("reader", "task", "rt/miron/task", "std_msgs/String", ",\"durability\":\"transient_local\",\"depth\":1");
+                    JsonNode first = late.awaitSample("task", d -> true);
+                    assertNotNull("the late node gets the current decision", first);
+                    assertEquals("dock", first.path("data").asText());
+                    // a numeric varpoint as std_msgs/Float64, the metric as std_msgs/Float64
+                    late.endpoint("reader", "vel", "rt/miron/max_velocity", "std_msgs/Float64", ",\"durability\":\"transient_local\",\"depth\":1");
+                    late.endpoint("reader", "pa", "rt/miron/power_autonomy", "std_msgs/Float64", ",\"durability\":\"transient_local\",\"depth\":1");
+                    JsonNode vel = late.awaitSample("vel", d -> true);
+                    assertNotNull("maxVelocity reaches the late node", vel);
+                    List<BusProbe.Message> decisions = f.probe.messages(Topics.DECISION);
+                    JsonNode decided = decisions.get(decisions.size() - 1).body(); // the current decision
+                    assertEquals(decided.path("decisions").path("maxVelocity").asDouble(), vel.path("data").asDouble(), 0);
+                    JsonNode pa = late.awaitSample("pa", d -> true);
+                    assertNotNull("power_autonomy reaches the late node", pa);
+                    assertTrue(pa.toString(), pa.path("data").asDouble() >= 0 && pa.path("data").asDouble() <= 1);
+                }
+                assertEquals(0, b.count("malformedInput"));
+            }
+        }
+    }
+
+    /** RoQME's own topics: a RoqmeDoubleContext in, every roqme.estimate out as RoqmeEstimate; then RoqmeEstimate in. */
+    public void roqmeTypesBothWays(Path dir) throws Exception {
+        Endpoints ep = Endpoints.freeLoopback();
+        try (Broker broker = new Broker(ep).start(); BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
+                BusClient input = new BusClient("test-input", ep.busIn(), null, List.of(), (t, x) -> { }).start();
+                CyclonePeer tools = new CyclonePeer(dir)) {
+            assertTrue(input.awaitReady(TIMEOUT));
+            String partition = ",\"partition\":\"Roqme DDS partition\"";
+            try (Bridge out = bridge("{\"roqme\": {\"namespace\": \"Intralogistics\", \"estimates\": \"out\"}}", ep)) {
+                tools.endpoint("writer", "ctx", "RoqmeDoubleContext", "RoqmeDoubleContext", partition);
+                tools.endpoint("writer", "enum", "RoqmeEnumContext", "RoqmeEnumContext", partition);
+                tools.endpoint("reader", "est", "RoqmeEstimate", "RoqmeEstimate", partition);
+                tools.awaitMatched("ctx");
+                awaitMatched(out, "RoqmeDoubleContext");
+                tools.write("ctx", "{\"name\":\"BatteryLevel\",\"value\":[42.5]}");
+                JsonNode c = probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("BatteryLevel"), TIMEOUT);
+                assertNotNull("RoqmeDoubleContext -> roqme.context", c);
+                assertEquals(42.5, c.path("value").asDouble(), 0);
+                assertEquals("number", c.path("type").asText());
+                assertEquals("Intralogistics", c.path("namespace").asText());
+                tools.awaitMatched("enum");
+                awaitMatched(out, "RoqmeEnumContext");
+                tools.write("enum", "{\"name\":\"FreeSpace\",\"value\":[\"HIGH\"]}");
+                JsonNode e = probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("FreeSpace"), TIMEOUT);
+                assertNotNull("RoqmeEnumContext -> roqme.context", e);
+                assertEquals("enum", e.path("type").asText());
+                assertEquals("HIGH", e.path("value").asText());
+                tools.write("ctx", "{\"name\":\"BatteryLevel\",\"value\":[]}"); // no value: dropped
+                tools.awaitMatched("est");
+                awaitMatched(out, "RoqmeEstimate");
+                input.publish(Topics.ESTIMATE, "{\"name\":\"power_autonomy\",\"namespace\":\"Intralogistics\",\"value\":0.25,\"time\":1}");
+                JsonNode est = tools.awaitSample("est", x -> x.path("name").asText().equals("power_autonomy"));
+                assertNotNull("roqme.estimate -> RoqmeEstimate", est);
+                assertEquals(0.25, est.path("value").asDouble(), 0);
+                long end = System.currentTimeMillis() + TIMEOUT;
+                while (out.count("malformedInput") < 1 && System.currentTimeMillis() < end) {
+                    Thread.sleep(20);
+                }
+                assertEquals("the empty context is counted and dropped", 1, out.count("malformedInput"));
+                assertEquals(2, out.count("contextsIn"));
+            }
+            try (Bridge in = bridge("{\"roqme\": {\"namespace\": \"Intralogistics\", \"contexts\": false, \"estimates\": \"in\"}}", ep)) {
+                tools.endpoint("writer", "estw", "RoqmeEstimate", "RoqmeEstimate", partition);
+                tools.awaitMatched("estw");
+                awaitMatched(in, "RoqmeEstimate");
+                tools.write("estw", "{\"name\":\"safety\",\"value\":0.75}");
+                JsonNode s = probe.await(Topics.ESTIMATE, x -> x.path("name").asText().equals("safety"), TIMEOUT);
+                assertNotNull("RoqmeEstimate -> roqme.estimate (the original provider feeding our engine)", s);
+                assertEquals(0.75, s.path("value").asDouble(), 0);
+                assertEquals("Intralogistics", s.path("namespace").asText());
+                tools.write("estw", "{\"name\":\"safety\",\"value\":7.5}"); // outside [0, 1]: dropped
+                long end = System.currentTimeMillis() + TIMEOUT;
+                while (in.count("malformedInput") < 1 && System.currentTimeMillis() < end) {
+                    Thread.sleep(20);
+                }
+                assertEquals(1, in.count("malformedInput"));
+            }
+        }
+    }
+
+    /** Samples whose field is missing, NaN or of the wrong type are counted and dropped; the bridge goes on. */
+    public void malformedFieldsAreCountedAndDropped(Path dir) throws Exception {
+        Endpoints ep = Endpoints.freeLoopback();
+        String config = """
+                {"contexts": [
+                  {"topic": "battery_state", "type": "sensor_msgs/BatteryState", "field": "percentage", "scale": 100,
+                   "context": "BatteryLevel", "namespace": "Intralogistics"},
+                  {"topic": "battery_state", "type": "sensor_msgs/BatteryState", "field": "cell_voltage[1]",
+                   "context": "CellVoltage"},
+                  {"topic": "distance", "type": "std_msgs/String", "field": "data", "as": "number", "context": "HumanDistance"}]}
+                """;
+        try (Broker broker = new Broker(ep).start(); BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
+                Bridge b = bridge(config, ep); CyclonePeer robot = new CyclonePeer(dir)) {
+            robot.endpoint("writer", "battery", "rt/battery_state", "sensor_msgs/BatteryState", "");
+            robot.endpoint("writer", "distance", "rt/distance", "std_msgs/String", "");
+            robot.awaitMatched("battery");
+            robot.awaitMatched("distance");
+            awaitMatched(b, "rt/battery_state");
+            awaitMatched(b, "rt/distance");
+            robot.write("battery", "{\"percentage\":NaN,\"cell_voltage\":[3.6]}"); // NaN; and no second cell
+            robot.write("distance", "{\"data\":\"far away\"}"); // not a number
+            robot.write("distance", "{\"data\":\"1.5\"}"); // a number in a string: fine
+            robot.write("battery", "{\"percentage\":0.5,\"cell_voltage\":[3.6,3.7]}");
+            assertNotNull(probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("HumanDistance")
+                    && x.path("value").asDouble() == 1.5, TIMEOUT));
+            assertNotNull(probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("BatteryLevel")
+                    && x.path("value").asDouble() == 50, TIMEOUT));
+            assertNotNull(probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("CellVoltage")
+                    && Math.abs(x.path("value").asDouble() - 3.7) < 1e-6, TIMEOUT));
+            assertEquals("NaN percentage, missing cell, text distance", 3, b.count("malformedInput"));
+            assertEquals(3, b.count("contextsIn"));
+            assertTrue(probe.messages(Topics.CONTEXT).stream().noneMatch(m -> m.body().path("value").asText().contains("NaN")));
+        }
+    }
+
+    /**
+     * The bridge restarts while the decision changes: the new bridge writes the current decision
+     * from the broker's cache; a robot that crashes and comes back is matched again both ways.
+     */
+    public void restartLosesNoDecisionAndAPeerComesBack(Path dir) throws Exception {
+        try (EngineFixture f = new EngineFixture(dir); BusProbe contexts = new BusProbe(f.endpoints.busOut(), Topics.CONTEXT)) {
+            f.startAll();
+            String config = LOOP_CONFIG;
+            CyclonePeer robot = new CyclonePeer(dir);
+            try {
+                robot.endpoint("reader", "task", "rt/miron/task", "std_msgs/String", ",\"durability\":\"transient_local\",\"depth\":1");
+                try (Bridge first = bridge(config, f.endpoints)) {
+                    robot.awaitMatched("task");
+                    assertNotNull(robot.awaitSample("task", d -> d.path("data").asText().equals("pickDeliverCharge")));
+                }
+                f.estimate("power_autonomy", 0.1); // decided while no bridge runs
+                assertNotNull(f.awaitVariant("task", "dock"));
+                try (Bridge second = bridge(config, f.endpoints)) {
+                    assertNotNull("the restarted bridge sends the decision taken meanwhile",
+                            robot.awaitSample("task", d -> d.path("data").asText().equals("dock")));
+                    robot.kill(); // the robot crashes ...
+                    robot = new CyclonePeer(dir); // ... and comes back
+                    robot.endpoint("reader", "task", "rt/miron/task", "std_msgs/String", ",\"durability\":\"transient_local\",\"depth\":1");
+                    robot.endpoint("writer", "battery", "rt/battery_state", "sensor_msgs/BatteryState", "");
+                    assertNotNull("matched again: the current decision", robot.awaitSample("task", d -> d.path("data").asText().equals("dock")));
+                    robot.awaitMatched("battery");
+                    awaitMatched(second, "rt/battery_state");
+                    robot.write("battery", "{\"percentage\":0.33}");
+                    assertNotNull("matched again: its contexts reach the bus", contexts.await(Topics.CONTEXT,
+                            x -> Math.abs(x.path("value").asDouble() - 33) < 1e-6, TIMEOUT));
+                }
+            } finally {
+                robot.close();
+            }
+        }
+    }
+}

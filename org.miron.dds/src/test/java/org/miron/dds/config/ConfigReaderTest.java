@@ -1,0 +1,117 @@
+package org.miron.dds.config;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertTrue;
+import static org.junit.Assert.fail;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.Test;
+import org.miron.dds.config.BridgeConfig.ContextType;
+import org.miron.dds.transport.IhmcTransport;
+import org.miron.dds.transport.Qos;
+import org.miron.testkit.JsonSchemaFile;
+import org.miron.testkit.RepositoryRoot;
+
+/** The bridge's configuration: what it accepts, and start-up errors with their positions (no DDS needed). */
+public class ConfigReaderTest {
+    private static final String ISSUE_SHAPE = """
+            {"domain": 0,
+             "contexts": [{"topic": "battery_state", "type": "sensor_msgs/BatteryState", "field": "percentage",
+                           "scale": 100, "context": "BatteryLevel", "namespace": "Intralogistics"}],
+             "decisions": [{"varpoint": "task", "topic": "miron/task"}]}
+            """;
+
+    private static BridgeConfig read(String json) throws ConfigException {
+        return ConfigReader.read(json, IhmcTransport.CATALOG);
+    }
+
+    private static String error(String json) {
+        try {
+            read(json);
+        } catch (ConfigException e) {
+            return e.format("bridge.json");
+        }
+        fail("accepted: " + json);
+        return null;
+    }
+
+    @Test
+    public void theIssuesShapeWithItsDefaults() throws Exception {
+        BridgeConfig c = read(ISSUE_SHAPE);
+        assertEquals(0, c.domain());
+        assertEquals("loopback only by default", List.of("127.0.0.1"), c.interfaces().stream().map(a -> a.getHostAddress()).toList());
+        BridgeConfig.ContextMapping m = c.contexts().get(0);
+        assertEquals(ContextType.NUMBER, m.as());
+        assertEquals(100, m.scale(), 0);
+        assertEquals(List.of("percentage"), m.path());
+        assertEquals("a reader that matches best-effort sensors too", new Qos(false, false, 10), m.qos());
+        assertEquals("std_msgs/String", c.decisions().get(0).type());
+        assertEquals("what Nav2's selectors expect", Qos.LATCHED, c.decisions().get(0).qos());
+        assertEquals(null, c.roqme());
+        assertTrue(JsonSchemaFile.DDS_BRIDGE.problems(ISSUE_SHAPE).isEmpty());
+    }
+
+    @Test
+    public void nestedPathsInterfacesQosAndRoqme() throws Exception {
+        BridgeConfig c = read("""
+                {"domain": 7, "interfaces": ["192.168.1.20"],
+                 "contexts": [{"topic": "/battery_state", "type": "sensor_msgs/BatteryState", "field": "header.stamp.sec", "context": "Stamp"},
+                              {"topic": "battery_state", "type": "sensor_msgs/BatteryState", "field": "cell_voltage[0]", "context": "Cell"},
+                              {"topic": "docked", "type": "std_msgs/Bool", "context": "Docked", "qos": {"reliability": "reliable", "depth": 5}},
+                              {"topic": "bump", "type": "std_msgs/Empty", "as": "event", "context": "Bump"}],
+                 "roqme": {"contexts": ["RoqmeDoubleContext"], "estimates": "in"}}
+                """);
+        assertEquals(7, c.domain());
+        assertEquals(List.of("header", "stamp", "sec"), c.contexts().get(0).path());
+        assertEquals(List.of("cell_voltage", 0), c.contexts().get(1).path());
+        assertEquals(ContextType.BOOLEAN, c.contexts().get(2).as());
+        assertEquals(new Qos(true, false, 5), c.contexts().get(2).qos());
+        assertEquals(ContextType.EVENT, c.contexts().get(3).as());
+        assertEquals(List.of("RoqmeDoubleContext"), c.roqme().contextTopics());
+        assertEquals("Roqme DDS partition", c.roqme().partition());
+    }
+
+    @Test
+    public void errorsCarryLineColumnAndPointer() {
+        String json = """
+                {"contexts": [
+                  {"topic": "battery_state", "type": "sensor_msgs/BatteryState",
+                   "field": "percent", "context": "BatteryLevel"}]}
+                """;
+        String e = error(json);
+        assertTrue(e, e.startsWith("bridge.json:3:13: error [dds-config]: /contexts/0/field: sensor_msgs/BatteryState has no value field \"percent\""));
+        assertTrue("lists the fields", e.contains("percentage") && e.contains("header.stamp.sec") && e.contains("cell_voltage[i]"));
+        assertTrue(error("{\"decisions\": [{\"varpoint\": \"task\", \"topic\": \"rt/miron/task\"}]}"),
+                error("{\"decisions\": [{\"varpoint\": \"task\", \"topic\": \"rt/miron/task\"}]}")
+                        .startsWith("bridge.json:1:46: error [dds-config]: /decisions/0/topic: give the ROS 2 name without rt/"));
+        assertEquals("bridge.json:1:54: error [dds-config]: /contexts/0/type: unknown message type sensor_msgs/Battery (a ROS 2 type as pkg/Name, e.g. sensor_msgs/BatteryState)",
+                error("{\"contexts\": [{\"topic\": \"b\", \"context\": \"B\", \"type\": \"sensor_msgs/Battery\"}]}"));
+        assertTrue(error("{\"contexts\": [{\"topic\": \"s\", \"type\": \"std_msgs/String\", \"context\": \"S\", \"scale\": 2}]}")
+                .contains("/contexts/0/scale: only a number context can be scaled"));
+        assertTrue(error("{\"decisions\": [{\"varpoint\": \"v\", \"topic\": \"t\", \"qos\": {\"durability\": \"durable\"}}]}")
+                .contains("/decisions/0/qos/durability: must be volatile or transient_local"));
+        assertTrue(error("{\"decisions\": [{\"varpoint\": \"v\", \"topic\": \"t\", \"colour\": 1}]}")
+                .contains("/decisions/0/colour: unknown key \"colour\""));
+        assertTrue(error("{\"domain\": 300, \"roqme\": {}}").startsWith("bridge.json:1:12: error [dds-config]: /domain: an integer from 0 to 232"));
+        assertTrue(error("{\"roqme\": {}, \"roqme\": {}}").contains("duplicate key"));
+        assertTrue(error("{\"roqme\": {},}").startsWith("bridge.json:1:"));
+        assertTrue(error("{}").contains("nothing to bridge"));
+        assertTrue(error("{\"interfaces\": [\"lo\"], \"roqme\": {}}").contains("/interfaces/0: an IPv4 address"));
+        assertTrue(error("{\"roqme\": {\"estimates\": \"both\"}}").contains("/roqme/estimates: must be \"out\""));
+    }
+
+    @Test
+    public void theExampleFollowsTheSchemaAndIsAccepted() throws Exception {
+        Path example = RepositoryRoot.resolve("examples/intralogistics/dds/bridge.json");
+        JsonSchemaFile.DDS_BRIDGE.assertValid(example);
+        BridgeConfig c = read(Files.readString(example));
+        assertEquals(2, c.contexts().size());
+        assertEquals(ContextType.ENUM, c.contexts().get(1).as());
+        assertEquals("std_msgs/Float64", c.decisions().get(1).type());
+        assertFalse(JsonSchemaFile.DDS_BRIDGE.problems("{\"decisions\": [{\"varpoint\": \"v\", \"topic\": \"rt/x\"}]}").isEmpty());
+        assertFalse(JsonSchemaFile.DDS_BRIDGE.problems("{\"domain\": 0}").isEmpty());
+    }
+}

@@ -1,0 +1,274 @@
+#!/usr/bin/env python3
+"""An independent DDS peer for the bridge's tests: Cyclone DDS (PyPI cyclonedds 11.0.1) speaking
+ROS 2's conventions (topics rt/<name>, types pkg::msg::dds_::Name_) and RoQME's own types.
+
+Driven over stdin/stdout, one JSON object per line, so a Java test can play a ROS 2 robot:
+  {"op": "writer", "id": "bat", "topic": "rt/battery_state", "type": "sensor_msgs/BatteryState",
+   "durability": "volatile|transient_local", "depth": 1, "partition": "..."}
+  {"op": "reader", ...same fields...}          samples come back as {"event": "sample", "id", "data"}
+  {"op": "write", "id": "bat", "data": {...}}   fields not given keep their defaults
+  {"op": "await_matched", "id": "bat", "count": 1, "timeout": 30}
+                                               -> {"event": "matched", "id", "count"} or {"event": "timeout", "id", "count"}
+  {"op": "close", "id": "bat"}   {"op": "quit"}
+Every command is answered ({"event": "ok", "op"} at least); errors as {"event": "error", "message"}.
+"""
+import dataclasses
+import json
+import sys
+import threading
+import time
+from dataclasses import dataclass, field
+
+from cyclonedds.core import Policy, Qos
+from cyclonedds.domain import DomainParticipant
+from cyclonedds.idl import IdlStruct
+import cyclonedds.idl.annotations as annotate
+import cyclonedds.idl.types as t
+from cyclonedds.pub import DataWriter, Publisher
+from cyclonedds.sub import DataReader, Subscriber
+from cyclonedds.topic import Topic
+from cyclonedds.util import duration
+
+
+@dataclass
+@annotate.final
+class Time(IdlStruct, typename="builtin_interfaces::msg::dds_::Time_"):
+    sec: t.int32 = 0
+    nanosec: t.uint32 = 0
+
+
+@dataclass
+@annotate.final
+class Header(IdlStruct, typename="std_msgs::msg::dds_::Header_"):
+    stamp: Time = field(default_factory=Time)
+    frame_id: str = ""
+
+
+@dataclass
+@annotate.final
+class BatteryState(IdlStruct, typename="sensor_msgs::msg::dds_::BatteryState_"):
+    header: Header = field(default_factory=Header)
+    voltage: t.float32 = 0.0
+    temperature: t.float32 = 0.0
+    current: t.float32 = 0.0
+    charge: t.float32 = 0.0
+    capacity: t.float32 = 0.0
+    design_capacity: t.float32 = 0.0
+    percentage: t.float32 = 0.0
+    power_supply_status: t.uint8 = 0
+    power_supply_health: t.uint8 = 0
+    power_supply_technology: t.uint8 = 0
+    present: bool = False
+    cell_voltage: t.sequence[t.float32] = field(default_factory=list)
+    cell_temperature: t.sequence[t.float32] = field(default_factory=list)
+    location: str = ""
+    serial_number: str = ""
+
+
+@dataclass
+@annotate.final
+class String(IdlStruct, typename="std_msgs::msg::dds_::String_"):
+    data: str = ""
+
+
+@dataclass
+@annotate.final
+class Float64(IdlStruct, typename="std_msgs::msg::dds_::Float64_"):
+    data: t.float64 = 0.0
+
+
+@dataclass
+@annotate.final
+class Float32(IdlStruct, typename="std_msgs::msg::dds_::Float32_"):
+    data: t.float32 = 0.0
+
+
+@dataclass
+@annotate.final
+class Bool(IdlStruct, typename="std_msgs::msg::dds_::Bool_"):
+    data: bool = False
+
+
+@dataclass
+@annotate.final
+class Int32(IdlStruct, typename="std_msgs::msg::dds_::Int32_"):
+    data: t.int32 = 0
+
+
+# RoQME's own types (module RoqmeDDSTopics). Declared without @key: IHMC's library (the bridge's
+# DDS) creates only NO_KEY topics, and DDS does not match a keyed topic with an unkeyed one
+# (docs/dds.md, "RoQME's topics").
+@dataclass
+@annotate.final
+class RoqmeDoubleContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeDoubleContext"):
+    name: str = ""
+    value: t.sequence[t.float64] = field(default_factory=list)
+
+
+@dataclass
+@annotate.final
+class RoqmeIntContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeIntContext"):
+    name: str = ""
+    value: t.sequence[t.int64] = field(default_factory=list)
+
+
+@dataclass
+@annotate.final
+class RoqmeBoolContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeBoolContext"):
+    name: str = ""
+    value: t.sequence[bool] = field(default_factory=list)
+
+
+@dataclass
+@annotate.final
+class RoqmeEnumContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeEnumContext"):
+    name: str = ""
+    value: t.sequence[str] = field(default_factory=list)
+
+
+@dataclass
+@annotate.final
+class RoqmeEventContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeEventContext"):
+    name: str = ""
+    value: t.sequence[str] = field(default_factory=list)
+
+
+@dataclass
+@annotate.final
+class RoqmeEstimate(IdlStruct, typename="RoqmeDDSTopics::RoqmeEstimate"):
+    name: str = ""
+    value: t.float64 = 0.0
+
+
+TYPES = {
+    "sensor_msgs/BatteryState": BatteryState, "std_msgs/String": String, "std_msgs/Float64": Float64,
+    "std_msgs/Float32": Float32, "std_msgs/Bool": Bool, "std_msgs/Int32": Int32,
+    "RoqmeDoubleContext": RoqmeDoubleContext, "RoqmeIntContext": RoqmeIntContext,
+    "RoqmeBoolContext": RoqmeBoolContext, "RoqmeEnumContext": RoqmeEnumContext,
+    "RoqmeEventContext": RoqmeEventContext, "RoqmeEstimate": RoqmeEstimate,
+}
+
+out_lock = threading.Lock()
+
+
+def emit(**event):
+    with out_lock:
+        sys.stdout.write(json.dumps(event) + "\n")
+        sys.stdout.flush()
+
+
+def build(cls, data):
+    """A message of cls from a dict; nested dataclasses from nested dicts, absent fields default."""
+    kwargs = {}
+    for f in dataclasses.fields(cls):
+        if f.name not in data:
+            continue
+        v = data[f.name]
+        if isinstance(v, dict) and dataclasses.is_dataclass(f.type if isinstance(f.type, type) else None):
+            v = build(f.type, v)
+        elif isinstance(v, dict):
+            v = build(globals()[f.type] if isinstance(f.type, str) else f.type, v)
+        kwargs[f.name] = v
+    return cls(**kwargs)
+
+
+def encode(obj):
+    if dataclasses.is_dataclass(obj):
+        return {f.name: encode(getattr(obj, f.name)) for f in dataclasses.fields(obj)}
+    if isinstance(obj, (list, tuple)):
+        return [encode(x) for x in obj]
+    if isinstance(obj, float) and obj != obj:
+        return "NaN"
+    return obj
+
+
+class Peer:
+    def __init__(self, domain):
+        self.dp = DomainParticipant(domain)
+        self.entities = {}  # id -> ("reader"|"writer", entity, type)
+        self.lock = threading.Lock()
+        threading.Thread(target=self.poll, daemon=True).start()
+
+    def qos(self, cmd):
+        policies = [Policy.Reliability.Reliable(duration(seconds=1)) if cmd.get("reliability", "reliable") == "reliable"
+                    else Policy.Reliability.BestEffort,
+                    Policy.History.KeepLast(int(cmd.get("depth", 10)))]
+        policies.append(Policy.Durability.TransientLocal if cmd.get("durability") == "transient_local"
+                        else Policy.Durability.Volatile)
+        return Qos(*policies)
+
+    def create(self, cmd, kind):
+        cls = TYPES[cmd["type"]]
+        topic = Topic(self.dp, cmd["topic"], cls)
+        pq = Qos(Policy.Partition([cmd["partition"]])) if cmd.get("partition") else None
+        if kind == "writer":
+            ent = DataWriter(Publisher(self.dp, qos=pq), topic, qos=self.qos(cmd))
+        else:
+            ent = DataReader(Subscriber(self.dp, qos=pq), topic, qos=self.qos(cmd))
+        with self.lock:
+            self.entities[cmd["id"]] = (kind, ent, cls)
+
+    def matched(self, ident):
+        kind, ent, _ = self.entities[ident]
+        return len(ent.get_matched_subscriptions() if kind == "writer" else ent.get_matched_publications())
+
+    def poll(self):
+        while True:
+            with self.lock:
+                readers = [(i, e) for i, (k, e, _) in self.entities.items() if k == "reader"]
+            for ident, reader in readers:
+                try:
+                    for s in reader.take(N=64):
+                        if isinstance(s, IdlStruct):  # not an InvalidSample (dispose, no writers)
+                            emit(event="sample", id=ident, data=encode(s))
+                except Exception as e:  # a closed reader
+                    pass
+            time.sleep(0.01)
+
+    def handle(self, cmd):
+        op = cmd["op"]
+        if op in ("writer", "reader"):
+            self.create(cmd, op)
+        elif op == "write":
+            kind, ent, cls = self.entities[cmd["id"]]
+            ent.write(build(cls, cmd.get("data", {})))
+        elif op == "await_matched":
+            want, end = int(cmd.get("count", 1)), time.time() + float(cmd.get("timeout", 30))
+            while self.matched(cmd["id"]) < want and time.time() < end:
+                time.sleep(0.02)
+            n = self.matched(cmd["id"])
+            emit(event="matched" if n >= want else "timeout", id=cmd["id"], count=n)
+            return
+        elif op == "matched":
+            emit(event="count", id=cmd["id"], count=self.matched(cmd["id"]))
+            return
+        elif op == "close":
+            with self.lock:
+                self.entities.pop(cmd["id"])  # the last reference: Cyclone deletes the entity
+        elif op == "quit":
+            emit(event="ok", op=op)
+            sys.stdout.flush()
+            raise SystemExit(0)
+        else:
+            raise ValueError("unknown op " + op)
+        emit(event="ok", op=op, id=cmd.get("id"))
+
+
+def main():
+    domain = int(sys.argv[1]) if len(sys.argv) > 1 else 0
+    peer = Peer(domain)
+    emit(event="ready")
+    for line in sys.stdin:
+        line = line.strip()
+        if not line:
+            continue
+        try:
+            peer.handle(json.loads(line))
+        except SystemExit:
+            raise
+        except Exception as e:
+            emit(event="error", message="%s: %s" % (type(e).__name__, e))
+
+
+if __name__ == "__main__":
+    main()
