@@ -5,26 +5,11 @@
 # Idempotent; never fails the caller: without network or python3-venv it only says why.
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-venv="$root/build/dds-venv"
-version="11.0.1"
-marker="$venv/.cyclonedds-$version"
-[ -f "$marker" ] && exit 0
-
-reason() { echo "dds peer: not installed: $*; the DDS bridge scenarios will be skipped" >&2; exit 0; }
-command -v python3 >/dev/null 2>&1 || reason "no python3"
-if ! python3 -c 'import ensurepip, venv' >/dev/null 2>&1; then
-    if [ "$(id -u)" -eq 0 ]; then sudo=(); elif command -v sudo >/dev/null 2>&1; then sudo=(sudo -n); else sudo=(false); fi
-    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends python3-venv >&2 \
-        || reason "python3-venv is missing and could not be installed"
-fi
-rm -rf "$venv"
-python3 -m venv "$venv" >&2 || reason "python3 -m venv failed"
-"$venv/bin/pip" install -q --disable-pip-version-check "cyclonedds==$version" >&2 \
-    || { rm -rf "$venv"; reason "pip could not install cyclonedds==$version"; }
-"$venv/bin/python" -c 'import cyclonedds.domain' >&2 || { rm -rf "$venv"; reason "cyclonedds does not import"; }
+. "$root/scripts/lib/pip-venv.sh"
+pip_venv "dds peer" "$root/build/dds-venv" cyclonedds 11.0.1 cyclonedds.domain \
+    "the DDS bridge scenarios will be skipped" || exit 0
 # The namespace the scenarios run in needs ip (iproute2) and unshare (util-linux).
 if ! command -v ip >/dev/null 2>&1 && [ "$(id -u)" -eq 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends iproute2 >&2 || true
 fi
-touch "$marker"
-echo "dds peer: cyclonedds $version installed in build/dds-venv" >&2
+exit 0
