@@ -36,8 +36,8 @@ public class BtResourceValidator extends ResourceValidatorImpl {
     @Override
     public List<Issue> validate(Resource resource, CheckMode mode, CancelIndicator cancel) {
         List<Issue> issues = super.validate(resource, mode, cancel);
-        int first = issues.stream().filter(Issue::isSyntaxError).mapToInt(BtResourceValidator::offset).min()
-                .orElse(-1);
+        int first = issues.stream().filter(Issue::isSyntaxError).mapToInt(BtResourceValidator::offset)
+                .filter(offset -> offset >= 0).min().orElse(-1);
         if (first < 0) {
             return issues;
         }
