@@ -727,6 +727,8 @@ async function issue23Checks(page, u) {
         await page.keyboard.press('Enter');
         await page.keyboard.type('<', { delay: 20 });
         await page.keyboard.press('Control+Space');
+        // Rows shown: the status bar has followed the cursor by then.
+        const first = await until('the suggest widget shows rows', async () => { const r = await u.suggestions(); return r.length && r; });
         const labels = await completionLabels('compact.bt', before, await u.cursor());
         for (const l of ['SequenceWithMemory', 'Script', 'Fallback', 'Drive']) {
             if (!labels.includes(l)) throw new Error(`${l} not proposed: ${labels.join(' ')}`);
@@ -734,7 +736,6 @@ async function issue23Checks(page, u) {
         const wrong = labels.filter((l) => ['<', '</', 'SequenceStar', 'FallbackStar', 'SubTreePlus', 'BlackboardCheckInt',
             'BlackboardCheckDouble', 'BlackboardCheckString', 'RetryUntilSuccesful'].includes(l));
         if (wrong.length) throw new Error(`proposed in a version-4 tree: ${wrong.join(' ')}`);
-        const first = await until('the suggest widget shows rows', async () => { const r = await u.suggestions(); return r.length && r; });
         if (first[0].startsWith('<')) throw new Error(`the first rows are ${first.slice(0, 3).join(' | ')}`);
         await page.keyboard.type('Seq', { delay: 20 });
         const sequences = await until('SequenceWithMemory in the suggest widget', async () => {
@@ -756,8 +757,14 @@ async function issue23Checks(page, u) {
         await page.keyboard.press('Escape');
         await page.keyboard.press('ArrowLeft');
         await page.keyboard.press('ArrowLeft');
+        // The cursor before "/>" (the status bar follows the cursor a moment later).
+        const text = (await u.lines('<SubTree ID="Drive"').first().textContent()).replace(/\u00a0/g, ' ');
+        const at = await until('the cursor before />', async () => {
+            const c = await u.cursor();
+            return c.line === 6 && c.character === text.indexOf('/>') && c;
+        });
         await page.keyboard.press('Control+Space');
-        const labels = await completionLabels('compact.bt', before, await u.cursor());
+        const labels = await completionLabels('compact.bt', before, at);
         if (!labels.includes('_autoremap')) throw new Error(`_autoremap not proposed: ${labels.join(' ')}`);
         const wrong = labels.filter((l) => ['ID', '__shared_blackboard'].includes(l));
         if (wrong.length) throw new Error(`proposed again or from version 3: ${wrong.join(' ')} (all: ${labels.join(' ')})`);
@@ -792,15 +799,26 @@ async function issue23Checks(page, u) {
         await u.cursorOn('<BehaviorTree ID="Charge">', 18);
         for (let i = 0; i < 'Charge'.length; i++) await page.keyboard.press('Shift+ArrowRight');
         await page.keyboard.type('Dock', { delay: 20 });
-        await u.showProblems();
-        const problem = u.problem("unknown behavior tree 'main.Charge': no BehaviorTree has this ID");
-        await problem.waitFor({ timeout: T });
-        const text = await problem.innerText();
-        if (!text.includes('main.Dock') || text.includes('not a behavior tree')) throw new Error(`the Problems view says: ${text}`);
-        await page.screenshot({ path: join(out, 'renamed-tree.png') });
-        await page.locator('.editor-instance .monaco-editor textarea').first().focus();
-        await page.keyboard.press('Control+Z');
-        await u.lines('<BehaviorTree ID="Charge">').first().waitFor({ timeout: T });
+        try {
+            await u.showProblems();
+            // Typed letter by letter: the message once the name is whole.
+            const problem = page.locator('.markers-panel .monaco-list-row', { hasText: "unknown behavior tree 'main.Charge': no BehaviorTree has this ID" })
+                .filter({ hasText: 'main.Dock' }).first();
+            await problem.waitFor({ timeout: T }).catch(async (e) => {
+                throw new Error(`${e.message.split('\n')[0]}; the Problems view says: ${await page.locator('.markers-panel .monaco-list-row').allInnerTexts()}`);
+            });
+            const text = await problem.innerText();
+            if (text.includes('not a behavior tree')) throw new Error(`the Problems view says: ${text}`);
+            await page.screenshot({ path: join(out, 'renamed-tree.png') });
+        } finally {
+            // The tree gets its name back, for the checks after this one.
+            await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+            await until('<BehaviorTree ID="Charge"> back', async () => {
+                if (await u.lines('<BehaviorTree ID="Charge">').count()) return true;
+                await page.keyboard.press('Control+Z');
+                return false;
+            });
+        }
         await until('the message gone', async () => (await u.problem('no BehaviorTree has this ID').count()) === 0);
     });
     await check('document symbols have kinds: the Go to Symbol list shows their icons', async () => {
