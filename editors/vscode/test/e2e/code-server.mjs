@@ -4,7 +4,8 @@
 // what a user sees: language modes, the status-bar item, diagnostics in the Problems view, hover,
 // completion, snippets, .xml behaviour trees attached by their content, "MIRoN: Generate" and
 // "Convert to BehaviorTree.CPP 4" from the command palette, one message per answer or failure,
-// restarts. Assertions read the DOM and the "MIRoN Language Server" output (with the LSP trace)
+// restarts; with the real server also document highlights, quick fixes, Go to Symbol kinds and
+// semantic colours (issue 23's server items). Assertions read the DOM and the "MIRoN Language Server" output (with the LSP trace)
 // that VS Code writes to its log folder; screenshots are for people.
 //
 //   npm run test:e2e                      # the stand-in server (test/fake-miron.mjs)
@@ -152,6 +153,8 @@ if (real) {
         '      <input_port name="y"/>\n    </Action>\n  </TreeNodesModel>\n</root>\n');
     writeFileSync(join(workspace, 'retry.bt'), '<root main_tree_to_execute="Retrying">\n  <BehaviorTree ID="Retrying">\n' +
         '    <RetryUntilSuccessful num_attempts="3">\n      <AlwaysSuccess/>\n    </Retry>\n  </BehaviorTree>\n</root>\n');
+    writeFileSync(join(workspace, 'fallback.bt'), '<root main_tree_to_execute="Falling">\n  <BehaviorTree ID="Falling">\n' +
+        '    <Sequence>\n      <AlwaysSuccess/>\n    </Fallback>\n  </BehaviorTree>\n</root>\n');
 }
 const fakeLog = join(out, 'fake-miron.log');
 const workspaceSettings = (extra = {}) => writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
@@ -771,18 +774,18 @@ async function issue23Checks(page, u) {
         await page.locator('.suggest-widget .monaco-list-row', { hasText: '_autoremap' }).first().waitFor({ timeout: T });
         await page.keyboard.press('Escape');
     });
-    await check('</Retry> closing RetryUntilSuccessful: one message that says so, and its quick fix', async () => {
-        await u.open('retry.bt');
+    const closeTag = (file, wrong, right) => check(`</${wrong}> closing ${right}: one message that says so, and its quick fix`, async () => {
+        await u.open(file);
         await u.showProblems();
-        const message = '</Retry> does not close <RetryUntilSuccessful>: write </RetryUntilSuccessful>';
+        const message = `</${wrong}> does not close <${right}>: write </${right}>`;
         await u.problem(message).waitFor({ timeout: T });
-        const diagnostics = lastDiagnostics('retry.bt');
-        if (diagnostics?.length !== 1) throw new Error(`retry.bt: ${JSON.stringify(diagnostics?.map((d) => d.message))}`);
-        await u.cursorOn('</Retry>', 3);
+        const diagnostics = lastDiagnostics(file);
+        if (diagnostics?.length !== 1) throw new Error(`${file}: ${JSON.stringify(diagnostics?.map((d) => d.message))}`);
+        await u.cursorOn(`</${wrong}>`, 3);
         await page.keyboard.press('Control+.');
-        const fix = page.locator('.action-widget .monaco-list-row', { hasText: 'Change to RetryUntilSuccessful' }).first();
+        const fix = page.locator('.action-widget .monaco-list-row', { hasText: `Change to ${right}` }).first();
         await fix.waitFor({ timeout: T });
-        await page.screenshot({ path: join(out, 'quick-fix.png') });
+        await page.screenshot({ path: join(out, `quick-fix-${wrong}.png`) });
         // A click lands on the menu's pointer block: the keyboard chooses the row.
         await until('the quick fix chosen', async () => {
             if (/\bfocused\b/.test(await fix.getAttribute('class'))) return true;
@@ -790,10 +793,12 @@ async function issue23Checks(page, u) {
             return false;
         });
         await page.keyboard.press('Enter');
-        await u.lines('</RetryUntilSuccessful>').first().waitFor({ timeout: T });
+        await u.lines(`</${right}>`).first().waitFor({ timeout: T });
         await until('the message gone from the Problems view', async () => (await u.problem(message).count()) === 0);
-        await until('no diagnostic left on retry.bt', async () => lastDiagnostics('retry.bt')?.length === 0);
+        await until(`no diagnostic left on ${file}`, async () => lastDiagnostics(file)?.length === 0);
     });
+    await closeTag('retry.bt', 'Retry', 'RetryUntilSuccessful');
+    await closeTag('fallback.bt', 'Fallback', 'Sequence');
     await check('a tree renamed away: the .miron says no BehaviorTree has the ID, and names the trees', async () => {
         await u.open('intralogistics.bt');
         await u.cursorOn('<BehaviorTree ID="Charge">', 18);
