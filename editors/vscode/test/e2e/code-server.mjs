@@ -4,7 +4,8 @@
 // what a user sees: language modes, the status-bar item, diagnostics in the Problems view, hover,
 // completion, snippets, .xml behaviour trees attached by their content, "MIRoN: Generate" and
 // "Convert to BehaviorTree.CPP 4" from the command palette, one message per answer or failure,
-// restarts. Assertions read the DOM and the "MIRoN Language Server" output (with the LSP trace)
+// restarts; with the real server also document highlights, quick fixes, Go to Symbol kinds and
+// semantic colours (issue 23's server items). Assertions read the DOM and the "MIRoN Language Server" output (with the LSP trace)
 // that VS Code writes to its log folder; screenshots are for people.
 //
 //   npm run test:e2e                      # the stand-in server (test/fake-miron.mjs)
@@ -142,6 +143,18 @@ cpSync(join(workspace, 'intralogistics.miron'), join(workspace, 'typing.miron'))
 if (real) {
     // The real server finds nothing wrong in the example: a rule naming an unknown property.
     appendFileSync(join(workspace, 'intralogistics.miron'), '\nrule broken : roqme.nonexistent < 0.5\n  implies task = task::dock\n');
+    // A version-4 tree with a node declared compactly in its TreeNodesModel and built-ins (hover,
+    // version-4 completion), and a built-in closed by another name (issue 23, items 5, 7, 8).
+    writeFileSync(join(workspace, 'compact.bt'), '<root BTCPP_format="4" main_tree_to_execute="Compact">\n' +
+        '  <BehaviorTree ID="Compact">\n    <Sequence>\n      <Script code="x := 1"/>\n      <Repeat num_cycles="2">\n' +
+        '        <MoveTo x="1" y="2"/>\n      </Repeat>\n    </Sequence>\n  </BehaviorTree>\n' +
+        '  <BehaviorTree ID="Drive">\n    <AlwaysSuccess/>\n  </BehaviorTree>\n  <TreeNodesModel>\n' +
+        '    <Action ID="MoveTo">\n      <input_port name="x">x of the goal (m)</input_port>\n' +
+        '      <input_port name="y"/>\n    </Action>\n  </TreeNodesModel>\n</root>\n');
+    writeFileSync(join(workspace, 'retry.bt'), '<root main_tree_to_execute="Retrying">\n  <BehaviorTree ID="Retrying">\n' +
+        '    <RetryUntilSuccessful num_attempts="3">\n      <AlwaysSuccess/>\n    </Retry>\n  </BehaviorTree>\n</root>\n');
+    writeFileSync(join(workspace, 'fallback.bt'), '<root main_tree_to_execute="Falling">\n  <BehaviorTree ID="Falling">\n' +
+        '    <Sequence>\n      <AlwaysSuccess/>\n    </Fallback>\n  </BehaviorTree>\n</root>\n');
 }
 const fakeLog = join(out, 'fake-miron.log');
 const workspaceSettings = (extra = {}) => writeFileSync(join(workspace, '.vscode', 'settings.json'), JSON.stringify({
@@ -316,6 +329,49 @@ function ui(page) {
             for (let i = 0; i < offset; i++) await page.keyboard.press('ArrowRight');
         },
         lines: (text) => page.locator('.editor-instance .monaco-editor .view-line', { hasText: text }),
+        /** Shows the hover at the cursor (Ctrl+K Ctrl+I) and waits for one that says all of `expected`. */
+        async hoverSays(...expected) {
+            await page.keyboard.press('Escape');
+            await page.keyboard.press('Control+K');
+            await page.keyboard.press('Control+I');
+            let hover = page.locator('.monaco-hover');
+            for (const text of expected) hover = hover.filter({ hasText: text });
+            await hover.first().waitFor({ timeout: T }).catch(async (e) => {
+                throw new Error(`${e.message.split('\n')[0]}; the hover says: ${await page.locator('.monaco-hover').allInnerTexts().catch(() => '?')}`);
+            });
+            await page.keyboard.press('Escape');
+        },
+        /** The labels of the rows the suggest widget shows. */
+        suggestions: () => page.locator('.suggest-widget.visible .monaco-list-row .label-name').allInnerTexts(),
+        /**
+         * The texts of the lines of the active editor painted by a document highlight (the
+         * decorations are in the overlay layer, placed at the same `top` as their line).
+         */
+        highlightedLines: () => page.locator('.editor-instance .monaco-editor').first().evaluate((editor) => {
+            // Spaces are rendered as no-break spaces.
+            const lines = [...editor.querySelectorAll('.view-lines .view-line')]
+                .map((l) => [l.getBoundingClientRect().top, l.textContent.replace(/\u00a0/g, ' ')]);
+            return [...editor.querySelectorAll('.wordHighlight, .wordHighlightStrong, .wordHighlightText')].map((d) => {
+                const top = d.getBoundingClientRect().top;
+                return (lines.find(([y]) => Math.abs(y - top) < 3) ?? [0, `? at ${top}`])[1];
+            });
+        }),
+        /** The cursor's position as the status bar says it, 0-based as in LSP. */
+        async cursor() {
+            const [, line, column] = /Ln (\d+), Col (\d+)/.exec(await page.locator('#status\\.editor\\.selection').innerText({ timeout: T }));
+            return { line: Number(line) - 1, character: Number(column) - 1 };
+        },
+        /** Puts the cursor on a line (Go to Line). */
+        async goToLine(line) {
+            await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+            await page.keyboard.press('Control+G');
+            const input = page.locator('.quick-input-widget input');
+            await input.waitFor({ timeout: T });
+            await input.fill(`:${line}`);
+            await page.keyboard.press('Enter');
+            await until(`the cursor on line ${line}`, async () =>
+                (await page.locator('#status\\.editor\\.selection').innerText({ timeout: 5000 })).startsWith(`Ln ${line},`));
+        },
         async typeAtEnd(text) {
             await page.locator('.editor-instance .monaco-editor textarea').first().focus();
             await page.keyboard.press('Control+End');
@@ -498,19 +554,72 @@ function semanticAnswers(trace, file) {
     });
 }
 
+/**
+ * The exchanges of `method` in the LSP trace, oldest first: { params, result } (result undefined
+ * while no answer is logged, null for "No result returned"). Notifications have params only.
+ */
+function lspTrace(method) {
+    const trace = outputLog();
+    const json = (text) => {
+        // The JSON of a trace entry ends where the next entry (or a blank line and a log line) starts.
+        const body = text.split(/\r?\n\r?\n(?=\S)/)[0];
+        try { return JSON.parse(body); } catch { return undefined; }
+    };
+    const requests = new Map();
+    const notifications = [];
+    const entry = /\[Trace - [^\]]*\] (Sending request|Received response|Received notification|Sending notification) '([^']*?)(?: - \((\d+)\))?'[^\n]*\n(Params|Result): |\[Trace - [^\]]*\] Received response '([^']*?) - \((\d+)\)'[^\n]*\nNo result returned/g;
+    for (const m of trace.matchAll(entry)) {
+        if (m[5] !== undefined) {
+            if (m[5] === method && requests.has(m[6])) requests.get(m[6]).result = null;
+            continue;
+        }
+        if (m[2] !== method) continue;
+        const value = json(trace.slice(m.index + m[0].length));
+        if (m[1] === 'Sending request') requests.set(m[3], { params: value, result: undefined });
+        else if (m[1] === 'Received response') { if (requests.has(m[3])) requests.get(m[3]).result = value; }
+        else notifications.push({ params: value });
+    }
+    return [...requests.values(), ...notifications];
+}
+
+/**
+ * The labels of the last completion answered for `file` at `at` ({ line, character }, 0-based),
+ * among the answers after the first `since`.
+ */
+async function completionLabels(file, since, at) {
+    return until(`a completion answer for ${file} at ${JSON.stringify(at)} in the LSP trace`, async () => {
+        const answered = lspTrace('textDocument/completion')
+            .filter((x) => x.params?.textDocument?.uri.endsWith(`/${file}`) && x.result !== undefined).slice(since)
+            .filter((x) => x.params.position.line === at.line && x.params.position.character === at.character);
+        if (!answered.length) return false;
+        const result = answered[answered.length - 1].result;
+        return (Array.isArray(result) ? result : result?.items ?? []).map((i) => i.label);
+    });
+}
+
+/** How many completion answers for `file` the trace holds. */
+function completionCount(file) {
+    return lspTrace('textDocument/completion').filter((x) => x.params?.textDocument?.uri.endsWith(`/${file}`) && x.result !== undefined).length;
+}
+
+/** The diagnostics last published for `file`. */
+function lastDiagnostics(file) {
+    const published = lspTrace('textDocument/publishDiagnostics').filter((x) => x.params?.uri?.endsWith(`/${file}`));
+    return published.length ? published[published.length - 1].params.diagnostics : undefined;
+}
+
 /** The server's semantic tokens colour what the grammar leaves in the default colour. */
 async function semanticCheck(page, u) {
     await check('semantic highlighting: a tree name after an alias and a property in a rule are coloured', async () => {
-        // The stand-in sends tokens for both; miron lsp once it has them (issue 23, item 15, server
-        // side): until then the TextMate grammar leaves both in the default colour, and this check
-        // is skipped.
+        // The stand-in sends tokens for both, and so does miron lsp (issue 23, item 15, server side):
+        // the TextMate grammar leaves both in the default colour.
         await u.open('intralogistics.miron');
         const answers = await until('a semantic tokens answer for intralogistics.miron', async () => {
             const a = semanticAnswers(outputLog(), 'intralogistics.miron');
             return a.length > 0 && a;
         });
         if (answers.every((tokens) => tokens === 0)) {
-            throw new Skip('the server answers textDocument/semanticTokens/full with no tokens');
+            throw new Error('the server answers textDocument/semanticTokens/full with no tokens');
         }
         // mtk1 is the editor's default foreground: a coloured token has another class.
         const colour = async (line, word) => until(`${word} coloured on "${line}"`, async () => {
@@ -520,6 +629,235 @@ async function semanticCheck(page, u) {
         });
         await colour('dock : main.Charge', 'Charge');
         await colour('rule noBattery', 'power_autonomy');
+    });
+}
+
+/** Issue 23, item 15: BT elements coloured by their kind (the grammar gives all tags one colour). */
+async function btSemanticCheck(page, u) {
+    await check('semantic highlighting: control, action and subtree elements of a tree have different colours', async () => {
+        await u.open('intralogistics.bt');
+        await until('a semantic tokens answer for intralogistics.bt', async () => semanticAnswers(outputLog(), 'intralogistics.bt').some((n) => n > 0));
+        const classOf = (line, word) => u.lines(line).first().locator('span span').evaluateAll((spans, w) =>
+            spans.filter((x) => x.textContent.trim() === w).map((x) => x.className)[0], word);
+        let last;
+        const colours = await until('Sequence, Action and SubTreePlus in three colours', async () => {
+            // Lines near the top: the editor renders only the lines in view.
+            const c = [await classOf('<Sequence name="deliver">', 'Sequence'), await classOf('<Action ID="objectdrop"', 'Action'),
+                await classOf('x_input="-8.08"', 'SubTreePlus')];
+            last = c;
+            return c.every(Boolean) && new Set(c).size === 3 && c;
+        }).catch((e) => { throw new Error(`${e.message}: their classes are ${last}`); });
+        await page.screenshot({ path: join(out, 'semantic-bt.png') });
+        if (colours.includes('mtk1')) throw new Error(`an element in the default colour: ${colours}`);
+    });
+}
+
+/** What the real server answers to issue 23's items 3, 5, 6, 7, 8, 9 and 11, as VS Code shows it. */
+async function issue23Checks(page, u) {
+    await check('document highlight: nothing on a keyword (the cursor on import), the occurrences of a symbol', async () => {
+        await u.open('intralogistics.miron');
+        await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+        await page.keyboard.press('Control+Home');
+        const asked = (line, character) => lspTrace('textDocument/documentHighlight').filter((x) =>
+            x.params?.textDocument?.uri.endsWith('/intralogistics.miron') && x.params.position.line === line
+            && x.params.position.character === character && x.result !== undefined);
+        // Move away and back, so that the cursor at 0:0 is a change VS Code asks about.
+        await page.keyboard.press('ArrowRight');
+        await page.keyboard.press('ArrowLeft');
+        const [onImport] = await until('documentHighlight at 0:0 answered', async () => asked(0, 0).length && asked(0, 0));
+        if (onImport.result?.length) throw new Error(`the server highlights on "import": ${JSON.stringify(onImport.result)}`);
+        await page.waitForTimeout(1500); // time for decorations to be painted
+        const painted = (await u.highlightedLines()).filter((l) => !l.startsWith('import'));
+        if (painted.length) throw new Error(`lines highlighted with the cursor on import: ${painted.join(' | ')}`);
+        // The varpoint task, declared on line 4: its declaration and its uses in the rules.
+        await u.cursorOn('@varpoint task', 12);
+        let last;
+        const lines = await until('task highlighted where it is declared and used', async () => {
+            const l = last = await u.highlightedLines();
+            return l.some((x) => x.includes('@varpoint task')) && l.some((x) => x.includes('implies task = task::dock')) && l;
+        }).catch((e) => { throw new Error(`${e.message}: highlighted: ${last?.join(' | ')}`); });
+        const strays = lines.filter((l) => !/\btask\b/.test(l));
+        if (strays.length) throw new Error(`lines without task highlighted: ${strays.join(' | ')}`);
+        await page.screenshot({ path: join(out, 'highlight.png') });
+    });
+    await check('hover on a tree and a node named from the .miron says what they are and where', async () => {
+        await u.open('intralogistics.miron');
+        await u.cursorOn('dock : main.Charge', 14);
+        await u.hoverSays('BehaviorTree', 'Charge', 'intralogistics.bt');
+        await u.cursorOn('} in main.PickDeliverChargeSubtree', 14);
+        await u.hoverSays('SubTreePlus', 'PickDeliverChargeSubtree', 'intralogistics.bt');
+    });
+    await check('hover on a compact node of the TreeNodesModel and on built-ins shows their ports', async () => {
+        await u.open('compact.bt');
+        await u.cursorOn('<MoveTo', 3);
+        await u.hoverSays('MoveTo', 'x of the goal (m)');
+        await u.cursorOn('<Script', 3);
+        await u.hoverSays('Script', 'code');
+        await u.cursorOn('<Repeat', 3);
+        await u.hoverSays('Repeat', 'num_cycles');
+        await page.screenshot({ path: join(out, 'hover-builtin.png') });
+    });
+    await check('hover on a RoQME function shows its signature', async () => {
+        await u.open('intralogistics.roqme');
+        await u.cursorOn(':= count(', 5);
+        await u.hoverSays('count(', 'window');
+    });
+    await check('completion after task:: offers no operators', async () => {
+        await u.open('typing.miron');
+        // Ends the rule typed by the check before.
+        await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+        await page.keyboard.press('Control+End');
+        await page.keyboard.type('dock', { delay: 20 });
+        await page.keyboard.press('Escape');
+        const before = completionCount('typing.miron');
+        await u.typeAtEnd('rule quiet : roqme.safety < 0.4 implies task = task::');
+        await page.keyboard.press('Control+Space');
+        await page.locator('.suggest-widget .monaco-list-row', { hasText: 'dock' }).first().waitFor({ timeout: T });
+        const labels = await completionLabels('typing.miron', before, await u.cursor());
+        const noise = labels.filter((l) => ['&', "'", '*', '+', '-', '->', '|', '(', '<', '='].includes(l));
+        if (noise.length) throw new Error(`operators proposed after task::: ${noise.join(' ')} (all: ${labels.join(' ')})`);
+        const shown = await u.suggestions();
+        if (shown.some((l) => !/dock|deliver|pick/.test(l))) throw new Error(`the suggest widget shows ${shown.join(' | ')}`);
+        await page.keyboard.press('Escape');
+        await page.keyboard.type('dock', { delay: 20 });
+        await page.keyboard.press('Escape');
+    });
+    await check('completion after < in a version-4 tree: its elements first, no <, </ or version-3 nodes', async () => {
+        await u.open('compact.bt');
+        const before = completionCount('compact.bt');
+        await u.goToLine(4); // <Script code="x := 1"/>
+        await page.keyboard.press('End');
+        await page.keyboard.press('Enter');
+        await page.keyboard.type('<', { delay: 20 });
+        await page.keyboard.press('Control+Space');
+        // Rows shown: the status bar has followed the cursor by then.
+        const first = await until('the suggest widget shows rows', async () => { const r = await u.suggestions(); return r.length && r; });
+        const labels = await completionLabels('compact.bt', before, await u.cursor());
+        for (const l of ['SequenceWithMemory', 'Script', 'Fallback', 'Drive']) {
+            if (!labels.includes(l)) throw new Error(`${l} not proposed: ${labels.join(' ')}`);
+        }
+        const wrong = labels.filter((l) => ['<', '</', 'SequenceStar', 'FallbackStar', 'SubTreePlus', 'BlackboardCheckInt',
+            'BlackboardCheckDouble', 'BlackboardCheckString', 'RetryUntilSuccesful'].includes(l));
+        if (wrong.length) throw new Error(`proposed in a version-4 tree: ${wrong.join(' ')}`);
+        if (first[0].startsWith('<')) throw new Error(`the first rows are ${first.slice(0, 3).join(' | ')}`);
+        await page.keyboard.type('Seq', { delay: 20 });
+        const sequences = await until('SequenceWithMemory in the suggest widget', async () => {
+            const r = await u.suggestions();
+            return r.includes('SequenceWithMemory') && r;
+        });
+        if (sequences.includes('SequenceStar')) throw new Error(`the suggest widget shows ${sequences.join(' | ')}`);
+        await page.screenshot({ path: join(out, 'completion-v4.png') });
+        await page.keyboard.press('Escape');
+        await page.keyboard.press('Control+Shift+K'); // the typed line goes
+    });
+    await check('completion in <SubTree ID="…" | of a version-4 tree: no ID again, no __shared_blackboard', async () => {
+        await u.open('compact.bt');
+        await u.goToLine(6); // <MoveTo x="1" y="2"/>
+        await page.keyboard.press('End');
+        await page.keyboard.press('Enter');
+        const before = completionCount('compact.bt');
+        await page.keyboard.type('<SubTree ID="Drive" />', { delay: 20 });
+        await page.keyboard.press('Escape');
+        await page.keyboard.press('ArrowLeft');
+        await page.keyboard.press('ArrowLeft');
+        // The cursor before "/>" (the status bar follows the cursor a moment later).
+        const text = (await u.lines('<SubTree ID="Drive"').first().textContent()).replace(/\u00a0/g, ' ');
+        const at = await until('the cursor before />', async () => {
+            const c = await u.cursor();
+            return c.line === 6 && c.character === text.indexOf('/>') && c;
+        });
+        await page.keyboard.press('Control+Space');
+        const labels = await completionLabels('compact.bt', before, at);
+        if (!labels.includes('_autoremap')) throw new Error(`_autoremap not proposed: ${labels.join(' ')}`);
+        const wrong = labels.filter((l) => ['ID', '__shared_blackboard'].includes(l));
+        if (wrong.length) throw new Error(`proposed again or from version 3: ${wrong.join(' ')} (all: ${labels.join(' ')})`);
+        await page.locator('.suggest-widget .monaco-list-row', { hasText: '_autoremap' }).first().waitFor({ timeout: T });
+        await page.keyboard.press('Escape');
+    });
+    const closeTag = (file, wrong, right) => check(`</${wrong}> closing ${right}: one message that says so, and its quick fix`, async () => {
+        await u.open(file);
+        await u.showProblems();
+        const message = `</${wrong}> does not close <${right}>: write </${right}>`;
+        await u.problem(message).waitFor({ timeout: T });
+        const diagnostics = lastDiagnostics(file);
+        if (diagnostics?.length !== 1) throw new Error(`${file}: ${JSON.stringify(diagnostics?.map((d) => d.message))}`);
+        await u.cursorOn(`</${wrong}>`, 3);
+        await page.keyboard.press('Control+.');
+        const fix = page.locator('.action-widget .monaco-list-row', { hasText: `Change to ${right}` }).first();
+        await fix.waitFor({ timeout: T });
+        await page.screenshot({ path: join(out, `quick-fix-${wrong}.png`) });
+        // A click lands on the menu's pointer block: the keyboard chooses the row.
+        await until('the quick fix chosen', async () => {
+            if (/\bfocused\b/.test(await fix.getAttribute('class'))) return true;
+            await page.keyboard.press('ArrowDown');
+            return false;
+        });
+        await page.keyboard.press('Enter');
+        await u.lines(`</${right}>`).first().waitFor({ timeout: T });
+        await until('the message gone from the Problems view', async () => (await u.problem(message).count()) === 0);
+        await until(`no diagnostic left on ${file}`, async () => lastDiagnostics(file)?.length === 0);
+    });
+    await closeTag('retry.bt', 'Retry', 'RetryUntilSuccessful');
+    await closeTag('fallback.bt', 'Fallback', 'Sequence');
+    await check('a tree renamed away: the .miron says no BehaviorTree has the ID, and names the trees', async () => {
+        await u.open('intralogistics.bt');
+        await u.cursorOn('<BehaviorTree ID="Charge">', 18);
+        for (let i = 0; i < 'Charge'.length; i++) await page.keyboard.press('Shift+ArrowRight');
+        await page.keyboard.type('Dock', { delay: 20 });
+        try {
+            await u.showProblems();
+            // Typed letter by letter: the message once the name is whole.
+            const problem = page.locator('.markers-panel .monaco-list-row', { hasText: "unknown behavior tree 'main.Charge': no BehaviorTree has this ID" })
+                .filter({ hasText: 'main.Dock' }).first();
+            await problem.waitFor({ timeout: T }).catch(async (e) => {
+                throw new Error(`${e.message.split('\n')[0]}; the Problems view says: ${await page.locator('.markers-panel .monaco-list-row').allInnerTexts()}`);
+            });
+            const text = await problem.innerText();
+            if (text.includes('not a behavior tree')) throw new Error(`the Problems view says: ${text}`);
+            await page.screenshot({ path: join(out, 'renamed-tree.png') });
+        } finally {
+            // The tree gets its name back, for the checks after this one.
+            await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+            await until('<BehaviorTree ID="Charge"> back', async () => {
+                if (await u.lines('<BehaviorTree ID="Charge">').count()) return true;
+                await page.keyboard.press('Control+Z');
+                return false;
+            });
+        }
+        await until('the message gone', async () => (await u.problem('no BehaviorTree has this ID').count()) === 0);
+    });
+    await check('document symbols have kinds: the Go to Symbol list shows their icons', async () => {
+        const icons = async (file, filter) => {
+            await u.open(file);
+            await page.keyboard.press('Escape');
+            await page.keyboard.press('Control+Shift+O');
+            const input = page.locator('.quick-input-widget input');
+            await input.waitFor({ timeout: T });
+            await input.fill(`@${filter}`);
+            return until(`symbols of ${file} listed`, async () => {
+                const rows = await page.locator('.quick-input-list .monaco-list-row').evaluateAll((els) => els.map((e) => ({
+                    name: (e.querySelector('.label-name')?.textContent ?? '').replace(/\u00a0/g, ' ').trim(),
+                    icon: (e.innerHTML.match(/codicon-symbol-[a-z-]+/) ?? [''])[0],
+                })));
+                return rows.length && rows;
+            });
+        };
+        const kind = (rows, name) => rows.filter((r) => r.name === name || r.name.endsWith(`.${name}`)).map((r) => r.icon);
+        const miron = await icons('intralogistics.miron', '');
+        await page.screenshot({ path: join(out, 'symbols.png') });
+        await page.keyboard.press('Escape');
+        const expect = (rows, name, icon) => {
+            if (!kind(rows, name).includes(icon)) throw new Error(`${name}: ${kind(rows, name).join(', ') || 'not listed'}, not ${icon}, in ${JSON.stringify(rows)}`);
+        };
+        expect(miron, 'task', 'codicon-symbol-field');
+        expect(miron, 'noBattery', 'codicon-symbol-method');
+        expect(miron, 'dock', 'codicon-symbol-enum-member');
+        const roqme = await icons('intralogistics.roqme', 'safety');
+        await page.keyboard.press('Escape');
+        expect(roqme, 'safety', 'codicon-symbol-property');
+        const bt = await icons('intralogistics.bt', 'Charge');
+        await page.keyboard.press('Escape');
+        expect(bt, 'Charge', 'codicon-symbol-class');
     });
 }
 
@@ -563,6 +901,8 @@ async function realChecks(page) {
             /semanticTokensProvider/.test(outputLog()) && /Sending request 'textDocument\/semanticTokens\/full/.test(outputLog()));
     });
     await semanticCheck(page, u);
+    await btSemanticCheck(page, u);
+    await issue23Checks(page, u);
     await check('MIRoN: Generate on a model with errors: one error message, nothing written', async () => {
         await u.open('intralogistics.miron');
         await u.clearToasts();
