@@ -191,12 +191,26 @@ public class LiveWireTest {
     }
 
     @Test
+    /**
+     * A port P with P + 1 free too: BehaviorTree.CPP's Groot2 publisher binds both (requests on P,
+     * its publisher on P + 1), and fails to start if the second is taken.
+     */
+    private static int freePortPair() throws java.io.IOException {
+        java.net.InetAddress lo = java.net.InetAddress.getLoopbackAddress();
+        for (int i = 0; i < 50; i++) {
+            try (java.net.ServerSocket a = new java.net.ServerSocket(0, 1, lo);
+                    java.net.ServerSocket b = new java.net.ServerSocket(a.getLocalPort() + 1, 1, lo)) {
+                return a.getLocalPort();
+            } catch (java.net.BindException taken) {
+                // P + 1 is in use: try another P
+            }
+        }
+        throw new java.io.IOException("no two consecutive free ports on the loopback");
+    }
+
     public void grootAttachesBehaviorTreeCppsPublisher() throws Exception {
         start(100);
-        int port;
-        try (java.net.ServerSocket free = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
-            port = free.getLocalPort();
-        }
+        int port = freePortPair();
         runner = new BtcppRunner(List.of(tree.toString(), "--bus", endpoints.busOut(), "--skill-requests",
                 endpoints.request(), "--skill-results", endpoints.skillEvents(), "--decision-wait", "0",
                 "--groot", Integer.toString(port)));
@@ -206,7 +220,7 @@ public class LiveWireTest {
         // request sent while its server thread starts may go unanswered: ask again on a new socket.
         String xml = "";
         try (org.zeromq.ZContext ctx = new org.zeromq.ZContext()) {
-            for (int attempt = 0; attempt < 6 && !xml.contains("VariantAction"); attempt++) {
+            for (int attempt = 0; attempt < 12 && !xml.contains("VariantAction"); attempt++) {
                 org.zeromq.ZMQ.Socket req = ctx.createSocket(org.zeromq.SocketType.REQ);
                 req.setLinger(0);
                 req.setReceiveTimeOut(5_000);
