@@ -190,7 +190,6 @@ public class LiveWireTest {
                 skills.pushed().stream().noneMatch(s -> s.path("name").asText().equals("Charge")));
     }
 
-    @Test
     /**
      * A port P with P + 1 free too: BehaviorTree.CPP's Groot2 publisher binds both (requests on P,
      * its publisher on P + 1), and fails to start if the second is taken.
@@ -208,6 +207,7 @@ public class LiveWireTest {
         throw new java.io.IOException("no two consecutive free ports on the loopback");
     }
 
+    @Test
     public void grootAttachesBehaviorTreeCppsPublisher() throws Exception {
         start(100);
         int port = freePortPair();
