@@ -349,12 +349,19 @@ public final class Simulation {
             }
             lastDerived[i] = value;
             InputSpec in = engineContexts.get(v.name());
-            switch (in.roqmeType()) {
-                case "number" -> inputs.setContext(in, in.type().equals("int") ? (Object) (int) Math.round((Double) value) : value);
-                case "boolean" -> inputs.setContext(in, value);
-                case "enum" -> inputs.setContext(in, Math.max(0, in.literals().indexOf(String.valueOf(value))));
-                default -> { }
+            if (!"event".equals(in.roqmeType())) {
+                toEngine(in, Json.MAPPER.valueToTree(value));
             }
+        }
+    }
+
+    /** A context value as the engine's input of its type (an event: it happened). */
+    private void toEngine(InputSpec in, JsonNode json) {
+        switch (in.roqmeType()) {
+            case "number" -> inputs.setContext(in, in.type().equals("int") ? (Object) (int) Math.round(json.asDouble()) : (Object) json.asDouble());
+            case "boolean" -> inputs.setContext(in, json.asBoolean());
+            case "enum" -> inputs.setContext(in, Math.max(0, in.literals().indexOf(json.asText())));
+            default -> inputs.setContext(in, Boolean.TRUE);
         }
     }
 
@@ -369,12 +376,7 @@ public final class Simulation {
         }
         InputSpec in = engineContexts.get(p.context());
         if (in != null) {
-            switch (in.roqmeType()) {
-                case "number" -> inputs.setContext(in, in.type().equals("int") ? (Object) (int) Math.round(json.asDouble()) : (Object) json.asDouble());
-                case "boolean" -> inputs.setContext(in, json.asBoolean());
-                case "enum" -> inputs.setContext(in, Math.max(0, in.literals().indexOf(json.asText())));
-                default -> inputs.setContext(in, Boolean.TRUE);
-            }
+            toEngine(in, json);
         }
         if (changed && now <= timelineMs) {
             ObjectNode o = Json.object();
