@@ -70,6 +70,11 @@ public class DdsBridgeTest {
     }
 
     @Test
+    public void unkeyedRoqmeTopicsWhenConfigured() throws Exception {
+        scenario("unkeyedRoqmeTopicsWhenConfigured");
+    }
+
+    @Test
     public void malformedFieldsAreCountedAndDropped() throws Exception {
         scenario("malformedFieldsAreCountedAndDropped");
     }

@@ -117,7 +117,11 @@ public final class DdsScenarios {
         }
     }
 
-    /** RoQME's own topics: a RoqmeDoubleContext in, every roqme.estimate out as RoqmeEstimate; then RoqmeEstimate in. */
+    /**
+     * RoQME's own topics, keyed by name as the original IDL declares them (the peer's structs carry
+     * {@code @key name}): a RoqmeDoubleContext and a RoqmeEnumContext in, every roqme.estimate out
+     * as RoqmeEstimate; then RoqmeEstimate in.
+     */
     public void roqmeTypesBothWays(Path dir) throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         try (Broker broker = new Broker(ep).start(); BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
@@ -174,6 +178,35 @@ public final class DdsScenarios {
                 }
                 assertEquals(1, in.count("malformedInput"));
             }
+        }
+    }
+
+    /**
+     * {@code "keyed": false}: peers that declared RoQME's structs without the key (a keyed and an
+     * unkeyed topic never match) still reach the bus, both ways.
+     */
+    public void unkeyedRoqmeTopicsWhenConfigured(Path dir) throws Exception {
+        Endpoints ep = Endpoints.freeLoopback();
+        String partition = ",\"partition\":\"Roqme DDS partition\"";
+        try (Broker broker = new Broker(ep).start(); BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
+                BusClient input = new BusClient("test-input", ep.busIn(), null, List.of(), (t, x) -> { }).start();
+                CyclonePeer tools = new CyclonePeer(dir);
+                Bridge b = bridge("{\"roqme\": {\"keyed\": false, \"contexts\": [\"RoqmeDoubleContext\"], \"estimates\": \"out\"}}", ep)) {
+            assertTrue(input.awaitReady(TIMEOUT));
+            tools.endpoint("writer", "ctx", "RoqmeDoubleContext", "unkeyed RoqmeDoubleContext", partition);
+            tools.endpoint("reader", "est", "RoqmeEstimate", "unkeyed RoqmeEstimate", partition);
+            tools.awaitMatched("ctx");
+            awaitMatched(b, "RoqmeDoubleContext");
+            tools.write("ctx", "{\"name\":\"HumanDistance\",\"value\":[1.25]}");
+            JsonNode c = probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("HumanDistance"), TIMEOUT);
+            assertNotNull("unkeyed RoqmeDoubleContext -> roqme.context", c);
+            assertEquals(1.25, c.path("value").asDouble(), 0);
+            tools.awaitMatched("est");
+            awaitMatched(b, "RoqmeEstimate");
+            input.publish(Topics.ESTIMATE, "{\"name\":\"safety\",\"namespace\":\"\",\"value\":0.5,\"time\":1}");
+            JsonNode est = tools.awaitSample("est", x -> x.path("name").asText().equals("safety"));
+            assertNotNull("roqme.estimate -> unkeyed RoqmeEstimate", est);
+            assertEquals(0.5, est.path("value").asDouble(), 0);
         }
     }
 
