@@ -70,6 +70,11 @@ public class DdsBridgeTest {
     }
 
     @Test
+    public void exampleRobotClosesTheLoop() throws Exception {
+        scenario("exampleRobotClosesTheLoop");
+    }
+
+    @Test
     public void unkeyedRoqmeTopicsWhenConfigured() throws Exception {
         scenario("unkeyedRoqmeTopicsWhenConfigured");
     }

@@ -5,9 +5,12 @@ import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.miron.dds.config.BridgeConfig;
 import org.miron.dds.config.ConfigReader;
 import org.miron.dds.transport.IhmcTransport;
@@ -19,6 +22,7 @@ import org.miron.runtime.roqme.LiveProvider;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.roqme.expr.Compiler;
 import org.miron.runtime.roqme.model.ModelReader;
+import org.miron.testkit.RepositoryRoot;
 import org.miron.testkit.runtime.BusProbe;
 import org.miron.testkit.runtime.EngineFixture;
 import org.miron.testkit.runtime.TestModels;
@@ -177,6 +181,41 @@ public final class DdsScenarios {
                     Thread.sleep(20);
                 }
                 assertEquals(1, in.count("malformedInput"));
+            }
+        }
+    }
+
+    /**
+     * The documented example: examples/intralogistics/dds/robot.py (Cyclone, its own network
+     * defaults) stands in for the robot beside the example's bridge configuration; its battery
+     * drains until the engine decides dock, which it prints and exits on.
+     */
+    public void exampleRobotClosesTheLoop(Path dir) throws Exception {
+        Path example = RepositoryRoot.resolve("examples/intralogistics/dds");
+        try (EngineFixture f = new EngineFixture(dir); BusProbe contexts = new BusProbe(f.endpoints.busOut(), Topics.CONTEXT)) {
+            f.startAll();
+            try (LiveProvider p = provider(f.endpoints);
+                    Bridge b = bridge(Files.readString(example.resolve("bridge.json")), f.endpoints)) {
+                ProcessBuilder pb = new ProcessBuilder(System.getProperty("dds.python", "python3"), "-u",
+                        example.resolve("robot.py").toString(), "--until", "dock", "--timeout", "240", "--period", "0.5")
+                        .redirectErrorStream(true);
+                pb.environment().remove("CYCLONEDDS_URI");
+                Process robot = pb.start();
+                String out;
+                try {
+                    out = new String(robot.getInputStream().readAllBytes(), StandardCharsets.UTF_8); // until it exits
+                    assertTrue("the robot exits", robot.waitFor(30, TimeUnit.SECONDS));
+                } finally {
+                    robot.destroyForcibly();
+                }
+                assertEquals("robot.py:\n" + out, 0, robot.exitValue());
+                List<String> tasks = out.lines().filter(l -> l.startsWith("task: ")).toList();
+                assertEquals(out, "task: pickDeliverCharge", tasks.get(0)); // the current decision, at once
+                assertEquals(out, "task: dock", tasks.get(tasks.size() - 1));
+                assertTrue(out, out.lines().anyMatch(l -> l.startsWith("maxVelocity: ")));
+                assertNotNull("its battery reached the bus as BatteryLevel", contexts.await(Topics.CONTEXT,
+                        c -> c.path("name").asText().equals("BatteryLevel") && c.path("value").asDouble() < 30, TIMEOUT));
+                assertEquals(0, b.count("malformedInput"));
             }
         }
     }
