@@ -181,6 +181,13 @@ public final class DdsScenarios {
                     Thread.sleep(20);
                 }
                 assertEquals(1, in.count("malformedInput"));
+                // a disposed instance carries no estimate: neither passed on nor counted as malformed
+                tools.send("{\"op\":\"dispose\",\"id\":\"estw\",\"data\":{\"name\":\"safety\"}}");
+                tools.write("estw", "{\"name\":\"mission\",\"value\":0.5}");
+                assertNotNull(probe.await(Topics.ESTIMATE, x -> x.path("name").asText().equals("mission"), TIMEOUT));
+                assertEquals(1, in.count("malformedInput"));
+                assertEquals("safety 0.75 only", 1, probe.messages(Topics.ESTIMATE).stream()
+                        .filter(m -> m.body().path("name").asText().equals("safety")).count());
             }
         }
     }

@@ -8,6 +8,7 @@ Driven over stdin/stdout, one JSON object per line, so a Java test can play a RO
      (RoQME's types are keyed by name as in their IDL; type "unkeyed RoqmeEstimate" is the struct without @key)
   {"op": "reader", ...same fields...}          samples come back as {"event": "sample", "id", "data"}
   {"op": "write", "id": "bat", "data": {...}}   fields not given keep their defaults
+  {"op": "dispose", "id": "est", "data": {"name": "safety"}}   disposes that instance (keyed types)
   {"op": "await_matched", "id": "bat", "count": 1, "timeout": 30}
                                                -> {"event": "matched", "id", "count"} or {"event": "timeout", "id", "count"}
   {"op": "close", "id": "bat"}   {"op": "quit"}
@@ -254,6 +255,9 @@ class Peer:
         elif op == "write":
             kind, ent, cls = self.entities[cmd["id"]]
             ent.write(build(cls, cmd.get("data", {})))
+        elif op == "dispose":  # a keyed instance, as a RoQME tool does with a context it no longer provides
+            kind, ent, cls = self.entities[cmd["id"]]
+            ent.dispose(build(cls, cmd.get("data", {})))
         elif op == "await_matched":
             want, end = int(cmd.get("count", 1)), time.time() + float(cmd.get("timeout", 30))
             while self.matched(cmd["id"]) < want and time.time() < end:

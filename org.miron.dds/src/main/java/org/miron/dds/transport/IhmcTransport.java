@@ -20,6 +20,7 @@ import us.ihmc.pubsub.attributes.CommonAttributes;
 import us.ihmc.pubsub.attributes.ParticipantProfile;
 import us.ihmc.pubsub.attributes.PublisherAttributes;
 import us.ihmc.pubsub.attributes.SubscriberAttributes;
+import us.ihmc.pubsub.common.ChangeKind;
 import us.ihmc.pubsub.common.MatchingInfo;
 import us.ihmc.pubsub.common.SampleInfo;
 import us.ihmc.pubsub.participant.Participant;
@@ -164,8 +165,8 @@ public final class IhmcTransport implements DdsTransport {
                     listener.undecodable("cannot decode a " + spec.type() + " on " + spec.name() + ": " + e.getMessage());
                     return;
                 }
-                if (!got || closed.get()) {
-                    return;
+                if (!got || closed.get() || info.getSampleKind() != ChangeKind.ALIVE) {
+                    return; // a keyed instance disposed or unregistered (its writer went): no data
                 }
                 ObjectNode json;
                 try {

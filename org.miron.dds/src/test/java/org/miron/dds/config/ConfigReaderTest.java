@@ -103,7 +103,7 @@ public class ConfigReaderTest {
         assertTrue(error("{}").contains("nothing to bridge"));
         assertTrue(error("{\"interfaces\": [\"lo\"], \"roqme\": {}}").contains("/interfaces/0: an IPv4 address"));
         assertTrue(error("{\"roqme\": {\"estimates\": \"both\"}}").contains("/roqme/estimates: must be \"out\""));
-        assertTrue(error("{\"roqme\": {\"keyed\": \"yes\"}}").startsWith("bridge.json:1:23: error [dds-config]: /roqme/keyed: true or false is expected"));
+        assertTrue(error("{\"roqme\": {\"keyed\": \"yes\"}}").startsWith("bridge.json:1:21: error [dds-config]: /roqme/keyed: true or false is expected"));
     }
 
     @Test
