@@ -204,7 +204,7 @@ public final class DdsScenarios {
             try (LiveProvider p = provider(f.endpoints);
                     Bridge b = bridge(Files.readString(example.resolve("bridge.json")), f.endpoints)) {
                 ProcessBuilder pb = new ProcessBuilder(System.getProperty("dds.python", "python3"), "-u",
-                        example.resolve("robot.py").toString(), "--until", "dock", "--timeout", "240", "--period", "0.5")
+                        example.resolve("robot.py").toString(), "--until", "dock", "--timeout", "240", "--period", "0.5", "--step", "0.05")
                         .redirectErrorStream(true);
                 pb.environment().remove("CYCLONEDDS_URI");
                 Process robot = pb.start();
@@ -217,7 +217,8 @@ public final class DdsScenarios {
                 }
                 assertEquals("robot.py:\n" + out, 0, robot.exitValue());
                 List<String> tasks = out.lines().filter(l -> l.startsWith("task: ")).toList();
-                assertEquals(out, "task: pickDeliverCharge", tasks.get(0)); // the current decision, at once
+                // the current decision at once (transient-local), well before the battery (-0.05 per 0.5 s) runs low
+                assertEquals(out, "task: pickDeliverCharge", tasks.get(0));
                 assertEquals(out, "task: dock", tasks.get(tasks.size() - 1));
                 assertTrue(out, out.lines().anyMatch(l -> l.startsWith("maxVelocity: ")));
                 assertNotNull("its battery reached the bus as BatteryLevel", contexts.await(Topics.CONTEXT,
