@@ -75,6 +75,11 @@ public class DdsBridgeTest {
     }
 
     @Test
+    public void keySwitchRefusesWhatItDoesNotRecognise() throws Exception {
+        scenario("keySwitchRefusesWhatItDoesNotRecognise");
+    }
+
+    @Test
     public void unkeyedRoqmeTopicsWhenConfigured() throws Exception {
         scenario("unkeyedRoqmeTopicsWhenConfigured");
     }

@@ -228,6 +228,11 @@ public final class DdsScenarios {
         }
     }
 
+    /** The native key switch on a real participant refuses what it does not recognise (KeySwitchChecks). */
+    public void keySwitchRefusesWhatItDoesNotRecognise(Path dir) throws Exception {
+        org.miron.dds.transport.KeySwitchChecks.run();
+    }
+
     /**
      * {@code "keyed": false}: peers that declared RoQME's structs without the key (a keyed and an
      * unkeyed topic never match) still reach the bus, both ways.
