@@ -92,7 +92,7 @@ public final class Bridge implements AutoCloseable {
             estimateWriters.add(w);
         }
         RoqmeTopics r = config.roqme();
-        TopicSpec est = r == null ? null : new TopicSpec("RoqmeEstimate", "RoqmeEstimate", r.qos(), List.of(r.partition()));
+        TopicSpec est = r == null ? null : new TopicSpec("RoqmeEstimate", "RoqmeEstimate", r.qos(), List.of(r.partition()), r.keyed());
         if (r != null && r.estimates().equals("out")) {
             roqmeEstimates = track(est.name(), dds.writer(est));
         }
@@ -104,7 +104,7 @@ public final class Bridge implements AutoCloseable {
         }
         if (r != null) {
             for (String struct : r.contextTopics()) {
-                TopicSpec spec = new TopicSpec(struct, struct, r.qos(), List.of(r.partition()));
+                TopicSpec spec = new TopicSpec(struct, struct, r.qos(), List.of(r.partition()), r.keyed());
                 track(struct, dds.reader(spec, listener(struct, msg -> ContextConversion.fromRoqme(struct, r.namespace(), msg,
                         System.currentTimeMillis()))));
             }

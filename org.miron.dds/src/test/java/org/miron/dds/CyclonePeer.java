@@ -125,7 +125,8 @@ final class CyclonePeer implements AutoCloseable {
 
     /** Waits, in the peer, until {@code id} has matched the bridge's endpoint. */
     void awaitMatched(String id) throws IOException, InterruptedException {
-        send("{\"op\":\"await_matched\",\"id\":\"" + id + "\",\"count\":1,\"timeout\":" + TIMEOUT / 1000 + "}");
+        // the peer gives up first, so a missing match is reported as such rather than as a silent peer
+        send("{\"op\":\"await_matched\",\"id\":\"" + id + "\",\"count\":1,\"timeout\":" + (TIMEOUT / 1000 - 10) + "}");
         JsonNode e = awaitEvent(x -> x.path("id").asText().equals(id) && (x.path("event").asText().equals("matched")
                 || x.path("event").asText().equals("timeout")));
         assertNotNull("an answer to await_matched " + id, e);

@@ -70,6 +70,21 @@ public class DdsBridgeTest {
     }
 
     @Test
+    public void exampleRobotClosesTheLoop() throws Exception {
+        scenario("exampleRobotClosesTheLoop");
+    }
+
+    @Test
+    public void keySwitchRefusesWhatItDoesNotRecognise() throws Exception {
+        scenario("keySwitchRefusesWhatItDoesNotRecognise");
+    }
+
+    @Test
+    public void unkeyedRoqmeTopicsWhenConfigured() throws Exception {
+        scenario("unkeyedRoqmeTopicsWhenConfigured");
+    }
+
+    @Test
     public void malformedFieldsAreCountedAndDropped() throws Exception {
         scenario("malformedFieldsAreCountedAndDropped");
     }

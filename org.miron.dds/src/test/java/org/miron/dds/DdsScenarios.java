@@ -5,9 +5,12 @@ import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import org.miron.dds.config.BridgeConfig;
 import org.miron.dds.config.ConfigReader;
 import org.miron.dds.transport.IhmcTransport;
@@ -19,6 +22,7 @@ import org.miron.runtime.roqme.LiveProvider;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.roqme.expr.Compiler;
 import org.miron.runtime.roqme.model.ModelReader;
+import org.miron.testkit.RepositoryRoot;
 import org.miron.testkit.runtime.BusProbe;
 import org.miron.testkit.runtime.EngineFixture;
 import org.miron.testkit.runtime.TestModels;
@@ -117,7 +121,11 @@ public final class DdsScenarios {
         }
     }
 
-    /** RoQME's own topics: a RoqmeDoubleContext in, every roqme.estimate out as RoqmeEstimate; then RoqmeEstimate in. */
+    /**
+     * RoQME's own topics, keyed by name as the original IDL declares them (the peer's structs carry
+     * {@code @key name}): a RoqmeDoubleContext and a RoqmeEnumContext in, every roqme.estimate out
+     * as RoqmeEstimate; then RoqmeEstimate in.
+     */
     public void roqmeTypesBothWays(Path dir) throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         try (Broker broker = new Broker(ep).start(); BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
@@ -173,7 +181,84 @@ public final class DdsScenarios {
                     Thread.sleep(20);
                 }
                 assertEquals(1, in.count("malformedInput"));
+                // a disposed instance carries no estimate: neither passed on nor counted as malformed
+                tools.send("{\"op\":\"dispose\",\"id\":\"estw\",\"data\":{\"name\":\"safety\"}}");
+                tools.write("estw", "{\"name\":\"mission\",\"value\":0.5}");
+                assertNotNull(probe.await(Topics.ESTIMATE, x -> x.path("name").asText().equals("mission"), TIMEOUT));
+                assertEquals(1, in.count("malformedInput"));
+                assertEquals("safety 0.75 only", 1, probe.messages(Topics.ESTIMATE).stream()
+                        .filter(m -> m.body().path("name").asText().equals("safety")).count());
             }
+        }
+    }
+
+    /**
+     * The documented example: examples/intralogistics/dds/robot.py (Cyclone, its own network
+     * defaults) stands in for the robot beside the example's bridge configuration; its battery
+     * drains until the engine decides dock, which it prints and exits on.
+     */
+    public void exampleRobotClosesTheLoop(Path dir) throws Exception {
+        Path example = RepositoryRoot.resolve("examples/intralogistics/dds");
+        try (EngineFixture f = new EngineFixture(dir); BusProbe contexts = new BusProbe(f.endpoints.busOut(), Topics.CONTEXT)) {
+            f.startAll();
+            try (LiveProvider p = provider(f.endpoints);
+                    Bridge b = bridge(Files.readString(example.resolve("bridge.json")), f.endpoints)) {
+                ProcessBuilder pb = new ProcessBuilder(System.getProperty("dds.python", "python3"), "-u",
+                        example.resolve("robot.py").toString(), "--until", "dock", "--timeout", "240", "--period", "0.5", "--step", "0.05")
+                        .redirectErrorStream(true);
+                pb.environment().remove("CYCLONEDDS_URI");
+                Process robot = pb.start();
+                String out;
+                try {
+                    out = new String(robot.getInputStream().readAllBytes(), StandardCharsets.UTF_8); // until it exits
+                    assertTrue("the robot exits", robot.waitFor(30, TimeUnit.SECONDS));
+                } finally {
+                    robot.destroyForcibly();
+                }
+                assertEquals("robot.py:\n" + out, 0, robot.exitValue());
+                List<String> tasks = out.lines().filter(l -> l.startsWith("task: ")).toList();
+                // the current decision at once (transient-local), well before the battery (-0.05 per 0.5 s) runs low
+                assertEquals(out, "task: pickDeliverCharge", tasks.get(0));
+                assertEquals(out, "task: dock", tasks.get(tasks.size() - 1));
+                assertTrue(out, out.lines().anyMatch(l -> l.startsWith("maxVelocity: ")));
+                assertNotNull("its battery reached the bus as BatteryLevel", contexts.await(Topics.CONTEXT,
+                        c -> c.path("name").asText().equals("BatteryLevel") && c.path("value").asDouble() < 30, TIMEOUT));
+                assertEquals(0, b.count("malformedInput"));
+            }
+        }
+    }
+
+    /** The native key switch on a real participant refuses what it does not recognise (KeySwitchChecks). */
+    public void keySwitchRefusesWhatItDoesNotRecognise(Path dir) throws Exception {
+        org.miron.dds.transport.KeySwitchChecks.run();
+    }
+
+    /**
+     * {@code "keyed": false}: peers that declared RoQME's structs without the key (a keyed and an
+     * unkeyed topic never match) still reach the bus, both ways.
+     */
+    public void unkeyedRoqmeTopicsWhenConfigured(Path dir) throws Exception {
+        Endpoints ep = Endpoints.freeLoopback();
+        String partition = ",\"partition\":\"Roqme DDS partition\"";
+        try (Broker broker = new Broker(ep).start(); BusProbe probe = new BusProbe(ep.busOut(), "roqme.");
+                BusClient input = new BusClient("test-input", ep.busIn(), null, List.of(), (t, x) -> { }).start();
+                CyclonePeer tools = new CyclonePeer(dir);
+                Bridge b = bridge("{\"roqme\": {\"keyed\": false, \"contexts\": [\"RoqmeDoubleContext\"], \"estimates\": \"out\"}}", ep)) {
+            assertTrue(input.awaitReady(TIMEOUT));
+            tools.endpoint("writer", "ctx", "RoqmeDoubleContext", "unkeyed RoqmeDoubleContext", partition);
+            tools.endpoint("reader", "est", "RoqmeEstimate", "unkeyed RoqmeEstimate", partition);
+            tools.awaitMatched("ctx");
+            awaitMatched(b, "RoqmeDoubleContext");
+            tools.write("ctx", "{\"name\":\"HumanDistance\",\"value\":[1.25]}");
+            JsonNode c = probe.await(Topics.CONTEXT, x -> x.path("name").asText().equals("HumanDistance"), TIMEOUT);
+            assertNotNull("unkeyed RoqmeDoubleContext -> roqme.context", c);
+            assertEquals(1.25, c.path("value").asDouble(), 0);
+            tools.awaitMatched("est");
+            awaitMatched(b, "RoqmeEstimate");
+            input.publish(Topics.ESTIMATE, "{\"name\":\"safety\",\"namespace\":\"\",\"value\":0.5,\"time\":1}");
+            JsonNode est = tools.awaitSample("est", x -> x.path("name").asText().equals("safety"));
+            assertNotNull("roqme.estimate -> unkeyed RoqmeEstimate", est);
+            assertEquals(0.5, est.path("value").asDouble(), 0);
         }
     }
 

@@ -5,8 +5,10 @@ ROS 2's conventions (topics rt/<name>, types pkg::msg::dds_::Name_) and RoQME's 
 Driven over stdin/stdout, one JSON object per line, so a Java test can play a ROS 2 robot:
   {"op": "writer", "id": "bat", "topic": "rt/battery_state", "type": "sensor_msgs/BatteryState",
    "durability": "volatile|transient_local", "depth": 1, "partition": "..."}
+     (RoQME's types are keyed by name as in their IDL; type "unkeyed RoqmeEstimate" is the struct without @key)
   {"op": "reader", ...same fields...}          samples come back as {"event": "sample", "id", "data"}
   {"op": "write", "id": "bat", "data": {...}}   fields not given keep their defaults
+  {"op": "dispose", "id": "est", "data": {"name": "safety"}}   disposes that instance (keyed types)
   {"op": "await_matched", "id": "bat", "count": 1, "timeout": 30}
                                                -> {"event": "matched", "id", "count"} or {"event": "timeout", "id", "count"}
   {"op": "close", "id": "bat"}   {"op": "quit"}
@@ -95,13 +97,14 @@ class Int32(IdlStruct, typename="std_msgs::msg::dds_::Int32_"):
     data: t.int32 = 0
 
 
-# RoQME's own types (module RoqmeDDSTopics). Declared without @key: IHMC's library (the bridge's
-# DDS) creates only NO_KEY topics, and DDS does not match a keyed topic with an unkeyed one
-# (docs/dds.md, "RoQME's topics").
+# RoQME's own types (module RoqmeDDSTopics), as the original IDL declares them: keyed by name. The
+# unkeyed twins below (same type names) stand for peers that declared the structs without @key; DDS
+# never matches a keyed topic with an unkeyed one, so each side must choose the same (docs/dds.md).
 @dataclass
 @annotate.final
 class RoqmeDoubleContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeDoubleContext"):
     name: str = ""
+    annotate.key("name")
     value: t.sequence[t.float64] = field(default_factory=list)
 
 
@@ -109,6 +112,7 @@ class RoqmeDoubleContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeDoubleContext
 @annotate.final
 class RoqmeIntContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeIntContext"):
     name: str = ""
+    annotate.key("name")
     value: t.sequence[t.int64] = field(default_factory=list)
 
 
@@ -116,6 +120,7 @@ class RoqmeIntContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeIntContext"):
 @annotate.final
 class RoqmeBoolContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeBoolContext"):
     name: str = ""
+    annotate.key("name")
     value: t.sequence[bool] = field(default_factory=list)
 
 
@@ -123,6 +128,7 @@ class RoqmeBoolContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeBoolContext"):
 @annotate.final
 class RoqmeEnumContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeEnumContext"):
     name: str = ""
+    annotate.key("name")
     value: t.sequence[str] = field(default_factory=list)
 
 
@@ -130,12 +136,28 @@ class RoqmeEnumContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeEnumContext"):
 @annotate.final
 class RoqmeEventContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeEventContext"):
     name: str = ""
+    annotate.key("name")
     value: t.sequence[str] = field(default_factory=list)
 
 
 @dataclass
 @annotate.final
 class RoqmeEstimate(IdlStruct, typename="RoqmeDDSTopics::RoqmeEstimate"):
+    name: str = ""
+    annotate.key("name")
+    value: t.float64 = 0.0
+
+
+@dataclass
+@annotate.final
+class UnkeyedRoqmeDoubleContext(IdlStruct, typename="RoqmeDDSTopics::RoqmeDoubleContext"):
+    name: str = ""
+    value: t.sequence[t.float64] = field(default_factory=list)
+
+
+@dataclass
+@annotate.final
+class UnkeyedRoqmeEstimate(IdlStruct, typename="RoqmeDDSTopics::RoqmeEstimate"):
     name: str = ""
     value: t.float64 = 0.0
 
@@ -146,6 +168,7 @@ TYPES = {
     "RoqmeDoubleContext": RoqmeDoubleContext, "RoqmeIntContext": RoqmeIntContext,
     "RoqmeBoolContext": RoqmeBoolContext, "RoqmeEnumContext": RoqmeEnumContext,
     "RoqmeEventContext": RoqmeEventContext, "RoqmeEstimate": RoqmeEstimate,
+    "unkeyed RoqmeDoubleContext": UnkeyedRoqmeDoubleContext, "unkeyed RoqmeEstimate": UnkeyedRoqmeEstimate,
 }
 
 out_lock = threading.Lock()
@@ -232,6 +255,9 @@ class Peer:
         elif op == "write":
             kind, ent, cls = self.entities[cmd["id"]]
             ent.write(build(cls, cmd.get("data", {})))
+        elif op == "dispose":  # a keyed instance, as a RoQME tool does with a context it no longer provides
+            kind, ent, cls = self.entities[cmd["id"]]
+            ent.dispose(build(cls, cmd.get("data", {})))
         elif op == "await_matched":
             want, end = int(cmd.get("count", 1)), time.time() + float(cmd.get("timeout", 30))
             while self.matched(cmd["id"]) < want and time.time() < end:

@@ -41,8 +41,10 @@ public record BridgeConfig(int domain, String name, List<InetAddress> interfaces
 
     /**
      * RoQME's own DDS topics: its context topics into {@code roqme.context}, and {@code RoqmeEstimate}
-     * out of {@code roqme.estimate} ("out"), into it ("in") or not at all ("none").
+     * out of {@code roqme.estimate} ("out"), into it ("in") or not at all ("none"); keyed by
+     * {@code name} as in the original IDL, or unkeyed for peers that declared the structs without the key.
      */
-    public record RoqmeTopics(String partition, String namespace, List<String> contextTopics, String estimates, Qos qos) {
+    public record RoqmeTopics(String partition, String namespace, List<String> contextTopics, String estimates, Qos qos,
+            boolean keyed) {
     }
 }

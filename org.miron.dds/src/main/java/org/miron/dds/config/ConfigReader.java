@@ -167,7 +167,7 @@ public final class ConfigReader {
 
     private RoqmeTopics roqme(JsonNode r, String p) throws ConfigException {
         object(r, p);
-        keys(r, p, Set.of("partition", "namespace", "contexts", "estimates", "qos"));
+        keys(r, p, Set.of("partition", "namespace", "contexts", "estimates", "qos", "keyed"));
         List<String> topics = new ArrayList<>();
         if (!r.has("contexts") || r.get("contexts").isBoolean()) {
             if (!r.has("contexts") || r.get("contexts").asBoolean()) {
@@ -187,7 +187,7 @@ public final class ConfigReader {
             throw error(p + "/estimates", "must be \"out\" (roqme.estimate to RoqmeEstimate), \"in\" (RoqmeEstimate to roqme.estimate) or \"none\"");
         }
         return new RoqmeTopics(text(r, p, "partition", ROQME_PARTITION), text(r, p, "namespace", ""), List.copyOf(topics), estimates,
-                qos(r, p, new Qos(true, false, 100)));
+                qos(r, p, new Qos(true, false, 100)), bool(r, p, "keyed", true));
     }
 
     private Qos qos(JsonNode parent, String p, Qos dflt) throws ConfigException {
@@ -251,6 +251,16 @@ public final class ConfigReader {
             throw error(p + "/" + key, "a non-empty string is expected");
         }
         return v.asText();
+    }
+
+    private boolean bool(JsonNode o, String p, String key, boolean dflt) throws ConfigException {
+        if (!o.has(key)) {
+            return dflt;
+        }
+        if (!o.get(key).isBoolean()) {
+            throw error(p + "/" + key, "true or false is expected, got " + o.get(key));
+        }
+        return o.get(key).asBoolean();
     }
 
     private int integer(JsonNode o, String p, String key, int dflt, int min, int max) throws ConfigException {

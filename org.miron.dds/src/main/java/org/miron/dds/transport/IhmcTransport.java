@@ -7,7 +7,9 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.net.InetAddress;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
@@ -18,6 +20,7 @@ import us.ihmc.pubsub.attributes.CommonAttributes;
 import us.ihmc.pubsub.attributes.ParticipantProfile;
 import us.ihmc.pubsub.attributes.PublisherAttributes;
 import us.ihmc.pubsub.attributes.SubscriberAttributes;
+import us.ihmc.pubsub.common.ChangeKind;
 import us.ihmc.pubsub.common.MatchingInfo;
 import us.ihmc.pubsub.common.SampleInfo;
 import us.ihmc.pubsub.participant.Participant;
@@ -37,6 +40,7 @@ public final class IhmcTransport implements DdsTransport {
     private final Domain domain;
     private final Participant participant;
     private final List<Consumer<String>> matchingListeners = new CopyOnWriteArrayList<>();
+    private final Map<String, Boolean> keyedTypes = new HashMap<>(); // registered types: keyed or not
 
     /**
      * @param domainId   the DDS domain (ROS_DOMAIN_ID)
@@ -59,7 +63,7 @@ public final class IhmcTransport implements DdsTransport {
     public static final TypeCatalog CATALOG = new TypeCatalog() {
         @Override
         public ObjectNode template(String type) {
-            TopicDataType<?> t = Types.lookup(type);
+            TopicDataType<?> t = Types.lookup(type, false);
             return t == null ? null : empty(t);
         }
     };
@@ -68,17 +72,61 @@ public final class IhmcTransport implements DdsTransport {
         return JsonOut.of(t, t.createData());
     }
 
-    private TopicDataType<?> type(String name) throws DdsException {
-        TopicDataType<?> t = Types.lookup(name);
+    /**
+     * The type, registered with the participant on first use. Keyed or not is the registered type's
+     * property in Fast-DDS, so one participant carries a type either keyed or unkeyed, never both.
+     */
+    private TopicDataType<?> type(String name, boolean keyed) throws DdsException {
+        TopicDataType<?> t = Types.lookup(name, keyed);
         if (t == null) {
-            throw new DdsException("unknown message type " + name);
+            throw new DdsException(keyed && Types.lookup(name, false) != null ? name + " has no key: only RoQME's types are keyed"
+                    : "unknown message type " + name);
         }
         synchronized (this) {
-            if (domain.getRegisteredType(participant, t.getName()) == null) {
+            Boolean was = keyedTypes.get(t.getName());
+            if (was == null) {
                 domain.registerType(participant, t);
+                if (keyed) {
+                    NativeKeySwitch.enable(participant, t.getName(), t.getTypeSize());
+                }
+                keyedTypes.put(t.getName(), keyed);
+            } else if (was != keyed) {
+                throw new DdsException(name + " is already used " + (was ? "keyed" : "unkeyed") + " by this bridge; it cannot be both");
             }
         }
         return t;
+    }
+
+    /**
+     * Fast-DDS's XML profile for the attributes, with the topic kind WITH_KEY for a keyed topic: the
+     * JAXB classes the library marshals with predate the {@code <kind>} element, which Fast-DDS's
+     * parser still reads.
+     */
+    static String withKey(String profile) throws IOException {
+        int at = profile.indexOf("<topic>");
+        if (at < 0 || profile.indexOf("<topic>", at + 1) >= 0) {
+            throw new IOException("unexpected DDS profile: no single <topic> element");
+        }
+        at += "<topic>".length();
+        return profile.substring(0, at) + "<kind>WITH_KEY</kind>" + profile.substring(at);
+    }
+
+    private static PublisherAttributes publisherAttributes(boolean keyed) {
+        return !keyed ? PublisherAttributes.create() : new PublisherAttributes() {
+            @Override
+            public String marshall(String profileName) throws IOException {
+                return withKey(super.marshall(profileName));
+            }
+        };
+    }
+
+    private static SubscriberAttributes subscriberAttributes(boolean keyed) {
+        return !keyed ? SubscriberAttributes.create() : new SubscriberAttributes() {
+            @Override
+            public String marshall(String profileName) throws IOException {
+                return withKey(super.marshall(profileName));
+            }
+        };
     }
 
     private static <A extends CommonAttributes<A>> A apply(A a, TopicDataType<?> type, TopicSpec spec) {
@@ -96,7 +144,7 @@ public final class IhmcTransport implements DdsTransport {
 
     @Override
     public Reader reader(TopicSpec spec, Listener listener) throws DdsException {
-        return reader(type(spec.type()), spec, listener);
+        return reader(type(spec.type(), spec.keyed()), spec, listener);
     }
 
     private <T> Reader reader(TopicDataType<T> type, TopicSpec spec, Listener listener) throws DdsException {
@@ -117,8 +165,8 @@ public final class IhmcTransport implements DdsTransport {
                     listener.undecodable("cannot decode a " + spec.type() + " on " + spec.name() + ": " + e.getMessage());
                     return;
                 }
-                if (!got || closed.get()) {
-                    return;
+                if (!got || closed.get() || info.getSampleKind() != ChangeKind.ALIVE) {
+                    return; // a keyed instance disposed or unregistered (its writer went): no data
                 }
                 ObjectNode json;
                 try {
@@ -136,7 +184,7 @@ public final class IhmcTransport implements DdsTransport {
             }
         };
         try {
-            Subscriber<T> sub = domain.createSubscriber(participant, apply(SubscriberAttributes.create(), type, spec), l);
+            Subscriber<T> sub = domain.createSubscriber(participant, apply(subscriberAttributes(spec.keyed()), type, spec), l);
             return new Reader() {
                 @Override
                 public int matched() {
@@ -155,14 +203,14 @@ public final class IhmcTransport implements DdsTransport {
 
     @Override
     public Writer writer(TopicSpec spec) throws DdsException {
-        return writer(type(spec.type()), spec);
+        return writer(type(spec.type(), spec.keyed()), spec);
     }
 
     private <T> Writer writer(TopicDataType<T> type, TopicSpec spec) throws DdsException {
         AtomicInteger matched = new AtomicInteger();
         java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
         try {
-            Publisher pub = domain.createPublisher(participant, apply(PublisherAttributes.create(), type, spec),
+            Publisher pub = domain.createPublisher(participant, apply(publisherAttributes(spec.keyed()), type, spec),
                     (p, info) -> count(matched, info, "writer " + spec.name()));
             return new Writer() {
                 @Override

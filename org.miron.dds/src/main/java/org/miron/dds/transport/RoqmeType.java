@@ -1,6 +1,10 @@
 package org.miron.dds.transport;
 
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.util.Locale;
 import us.ihmc.idl.CDR;
 import us.ihmc.idl.IDLSequence;
@@ -14,6 +18,10 @@ import us.ihmc.pubsub.common.SerializedPayload;
  * value; }} and {@code RoqmeObservation { string name; }}. One class for all of them: they differ
  * only in the element type of {@code value}. Bounds as the IHMC generator sets them for an IDL
  * without bounds: names up to 255 characters, at most 100 values.
+ *
+ * <p>In the original IDL {@code name} is the key ({@code @key}); a keyed instance hands Fast-DDS the
+ * RTPS key hash of each sample ({@link #getKey}), an unkeyed one (for peers that declared the
+ * structs without the key) none. The two are different topics to DDS and never match each other.
  */
 final class RoqmeType implements TopicDataType<RoqmeType.Message> {
     static final String MODULE = "RoqmeDDSTopics::";
@@ -74,11 +82,36 @@ final class RoqmeType implements TopicDataType<RoqmeType.Message> {
     }
 
     private final Kind kind;
+    private final boolean keyed;
     private final CDR serializeCdr = new CDR();
     private final CDR deserializeCdr = new CDR();
 
-    RoqmeType(Kind kind) {
+    RoqmeType(Kind kind, boolean keyed) {
         this.kind = kind;
+        this.keyed = keyed;
+    }
+
+    boolean keyed() {
+        return keyed;
+    }
+
+    /**
+     * The RTPS key hash of a keyed sample: the key ({@code name}) serialized as big-endian CDR
+     * (length with the terminating NUL, the bytes, the NUL), then MD5, because a string key may be
+     * longer than 16 bytes (RTPS 2.3, 9.6.3.8). Nothing for an unkeyed type.
+     */
+    @Override
+    public void getKey(Message m, ByteBuffer key) {
+        if (!keyed) {
+            return;
+        }
+        byte[] name = m.name.toString().getBytes(StandardCharsets.UTF_8);
+        ByteBuffer cdr = ByteBuffer.allocate(4 + name.length + 1).putInt(name.length + 1).put(name).put((byte) 0);
+        try {
+            key.put(MessageDigest.getInstance("MD5").digest(cdr.array()));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("every Java platform has MD5", e);
+        }
     }
 
     @Override
@@ -166,6 +199,6 @@ final class RoqmeType implements TopicDataType<RoqmeType.Message> {
 
     @Override
     public TopicDataType<Message> newInstance() {
-        return new RoqmeType(kind);
+        return new RoqmeType(kind, keyed);
     }
 }

@@ -12,11 +12,17 @@ final class Types {
     private Types() {
     }
 
-    /** A fresh type instance (each holds its own CDR buffers), or null for an unknown name. */
-    static TopicDataType<?> lookup(String name) {
+    /**
+     * A fresh type instance (each holds its own CDR buffers), or null for an unknown name or a key
+     * asked of a type that has none (only RoQME's types are keyed; ROS 2's never are).
+     */
+    static TopicDataType<?> lookup(String name, boolean keyed) {
         RoqmeType.Kind k = RoqmeType.Kind.of(name);
         if (k != null) {
-            return new RoqmeType(k);
+            return new RoqmeType(k, keyed);
+        }
+        if (keyed) {
+            return null;
         }
         int slash = name.indexOf('/');
         if (slash <= 0 || slash != name.lastIndexOf('/') || !name.matches("[a-z][a-z0-9_]*/[A-Z][A-Za-z0-9]*")) {

@@ -3,6 +3,8 @@
  * of messages as JSON trees) and its one implementation on IHMC's ROS 2 library,
  * {@link org.miron.dds.transport.IhmcTransport}. The library has one upstream, last released in 2024:
  * nothing outside this package names it. {@code JsonOut}/{@code JsonIn} convert any message type it
- * ships through its generic serializer; {@code RoqmeType} is RoQME's own IDL.
+ * ships through its generic serializer; {@code RoqmeType} is RoQME's own IDL, keyed by name or not;
+ * {@code NativeKeySwitch} makes a keyed topic possible at all with this version of the library
+ * (docs/dds.md, "Keyed RoQME topics").
  */
 package org.miron.dds.transport;

@@ -72,6 +72,8 @@ public class ConfigReaderTest {
         assertEquals(ContextType.EVENT, c.contexts().get(3).as());
         assertEquals(List.of("RoqmeDoubleContext"), c.roqme().contextTopics());
         assertEquals("Roqme DDS partition", c.roqme().partition());
+        assertTrue("keyed by name as in RoQME's IDL unless told otherwise", c.roqme().keyed());
+        assertEquals(false, read("{\"roqme\": {\"keyed\": false}}").roqme().keyed());
     }
 
     @Test
@@ -101,6 +103,7 @@ public class ConfigReaderTest {
         assertTrue(error("{}").contains("nothing to bridge"));
         assertTrue(error("{\"interfaces\": [\"lo\"], \"roqme\": {}}").contains("/interfaces/0: an IPv4 address"));
         assertTrue(error("{\"roqme\": {\"estimates\": \"both\"}}").contains("/roqme/estimates: must be \"out\""));
+        assertTrue(error("{\"roqme\": {\"keyed\": \"yes\"}}").startsWith("bridge.json:1:21: error [dds-config]: /roqme/keyed: true or false is expected"));
     }
 
     @Test

@@ -1,9 +1,11 @@
 package org.miron.dds.transport;
 
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.fail;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.ByteBuffer;
 import org.junit.Test;
 import us.ihmc.pubsub.TopicDataType;
 import us.ihmc.pubsub.common.SerializedPayload;
@@ -14,7 +16,7 @@ public class JsonMessagesTest {
 
     @SuppressWarnings("unchecked")
     private static JsonNode roundTrip(String type, String json) throws Exception {
-        TopicDataType<Object> t = (TopicDataType<Object>) Types.lookup(type);
+        TopicDataType<Object> t = (TopicDataType<Object>) Types.lookup(type, false);
         Object m = JsonIn.fill(t, JSON.readTree(json));
         SerializedPayload payload = new SerializedPayload(t.getTypeSize());
         t.serialize(m, payload);
@@ -42,9 +44,46 @@ public class JsonMessagesTest {
         assertEquals("{\"name\":\"FreeSpace\",\"value\":[\"HIGH\",\"LOW\"]}",
                 roundTrip("RoqmeEnumContext", "{\"name\": \"FreeSpace\", \"value\": [\"HIGH\", \"LOW\"]}").toString());
         assertEquals("{\"name\":\"Count\",\"value\":[-3,4]}", roundTrip("RoqmeIntContext", "{\"name\": \"Count\", \"value\": [-3, 4]}").toString());
-        assertEquals("RoqmeDDSTopics::RoqmeEstimate", Types.lookup("RoqmeEstimate").getName());
-        assertEquals("std_msgs::msg::dds_::String_", Types.lookup("std_msgs/String").getName());
-        assertEquals(null, Types.lookup("std_msgs/Nothing"));
-        assertEquals(null, Types.lookup("java/lang/String"));
+        assertEquals("RoqmeDDSTopics::RoqmeEstimate", Types.lookup("RoqmeEstimate", false).getName());
+        assertEquals("the keyed type has the same name", "RoqmeDDSTopics::RoqmeEstimate", Types.lookup("RoqmeEstimate", true).getName());
+        assertEquals("std_msgs::msg::dds_::String_", Types.lookup("std_msgs/String", false).getName());
+        assertEquals("ROS 2 types have no key", null, Types.lookup("std_msgs/String", true));
+        assertEquals(null, Types.lookup("std_msgs/Nothing", false));
+        assertEquals(null, Types.lookup("java/lang/String", false));
+    }
+
+    @SuppressWarnings("unchecked")
+    private static String keyHash(String type, boolean keyed, String json) throws Exception {
+        TopicDataType<Object> t = (TopicDataType<Object>) Types.lookup(type, keyed);
+        ByteBuffer key = ByteBuffer.allocateDirect(16); // as the library hands it to getKey
+        t.getKey(JsonIn.fill(t, JSON.readTree(json)), key);
+        StringBuilder hex = new StringBuilder();
+        for (int i = 0; i < key.position(); i++) {
+            hex.append(String.format("%02x", key.get(i)));
+        }
+        return hex.toString();
+    }
+
+    /** The RTPS key hash of the key name; expected values from Python's hashlib over the big-endian CDR of the string. */
+    @Test
+    public void keyHashIsTheMd5OfTheBigEndianName() throws Exception {
+        assertEquals("ff4ee5dae97e67e23fcc3a6b60305aca", keyHash("RoqmeEstimate", true, "{\"name\": \"safety\", \"value\": 0.5}"));
+        assertEquals("the value is no part of the key", "ff4ee5dae97e67e23fcc3a6b60305aca",
+                keyHash("RoqmeEstimate", true, "{\"name\": \"safety\", \"value\": 0.9}"));
+        assertEquals("UTF-8", "e3d9ac7c9d8c45c7f4e41421414c7b0b", keyHash("RoqmeDoubleContext", true, "{\"name\": \"\u00c5land\", \"value\": [1]}"));
+        assertEquals("no key for an unkeyed type", "", keyHash("RoqmeEstimate", false, "{\"name\": \"safety\"}"));
+    }
+
+    @Test
+    public void aKeyedProfileSaysWithKey() throws Exception {
+        String xml = "<data_writer profile_name=\"p\">\n<topic>\n<name>RoqmeEstimate</name>\n</topic>\n</data_writer>";
+        assertEquals("<data_writer profile_name=\"p\">\n<topic><kind>WITH_KEY</kind>\n<name>RoqmeEstimate</name>\n</topic>\n</data_writer>",
+                IhmcTransport.withKey(xml));
+        try {
+            IhmcTransport.withKey("<data_writer/>");
+            fail("a profile without a topic is refused");
+        } catch (java.io.IOException expected) {
+            // refused
+        }
     }
 }
