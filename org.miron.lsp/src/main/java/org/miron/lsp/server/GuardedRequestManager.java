@@ -1,6 +1,7 @@
 package org.miron.lsp.server;
 
 import java.lang.System.Logger.Level;
+import java.util.concurrent.CancellationException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutionException;
@@ -21,10 +22,21 @@ import com.google.inject.Inject;
 import com.google.inject.Singleton;
 
 /**
+ * Xtext's request manager with two changes.
+ * <p>
+ * A read asked for from inside a running read (Xtext's rename does: {@code RenameService2} waits on
+ * {@code ILanguageServerAccess.doRead} inside the rename request) runs at once on the caller's
+ * thread, under the outer read's cancel indicator. Xtext queues it instead, behind any write that
+ * arrived meanwhile; that write waits for the outer read, which waits for the queued one: the
+ * server stalled (no diagnostics, no answers) until the next write cancelled the queued read. A
+ * rename and an edit or a change on disk at the same moment did that, and the background rename
+ * warm-up ({@link RenameWarmUp}) met it regularly. The outer read holds off every write until it
+ * ends, so the inner one sees the same state it would have seen.
+ * <p>
  * The last resort behind the services' own handling of broken text: a request that still throws
  * is logged with its stack trace on standard error and answered with a short LSP error
  * (RequestFailed, {@link #MESSAGE}), not an internal error whose data is the stack trace, which
- * editors show as a popup. Cancellation passes through unchanged.
+ * editors show as a popup. Cancellation, also wrapped, passes through unchanged.
  */
 @Singleton
 public class GuardedRequestManager extends RequestManager {
@@ -40,9 +52,44 @@ public class GuardedRequestManager extends RequestManager {
         this.cancellation = cancellation;
     }
 
+    /** The cancel indicator of the read running on this thread, if one is. */
+    private final ThreadLocal<CancelIndicator> reading = new ThreadLocal<>();
+
+    // Not synchronized: a nested read runs outside the manager's lock, which new requests need.
     @Override
-    public synchronized <V> CompletableFuture<V> runRead(Function1<? super CancelIndicator, ? extends V> request) {
-        return super.runRead(cancelIndicator -> guarded(() -> request.apply(cancelIndicator)));
+    public <V> CompletableFuture<V> runRead(Function1<? super CancelIndicator, ? extends V> request) {
+        CancelIndicator outer = reading.get();
+        if (outer != null) {
+            return nested(outer, request);
+        }
+        return queued(request);
+    }
+
+    private synchronized <V> CompletableFuture<V> queued(Function1<? super CancelIndicator, ? extends V> request) {
+        return super.runRead(cancelIndicator -> {
+            reading.set(cancelIndicator);
+            try {
+                return guarded(() -> request.apply(cancelIndicator));
+            } finally {
+                reading.remove();
+            }
+        });
+    }
+
+    /** The nested read's failure goes to its caller as it is; the outer read is the guarded one. */
+    private <V> CompletableFuture<V> nested(CancelIndicator outer, Function1<? super CancelIndicator, ? extends V> request) {
+        CompletableFuture<V> result = new CompletableFuture<>();
+        try {
+            cancellation.checkCanceled(outer);
+            result.complete(request.apply(outer));
+        } catch (Throwable e) {
+            if (isCancellation(e)) {
+                result.cancel(true);
+            } else {
+                result.completeExceptionally(e);
+            }
+        }
+        return result;
     }
 
     @Override
@@ -58,7 +105,7 @@ public class GuardedRequestManager extends RequestManager {
         } catch (ResponseErrorException meaningful) {
             throw meaningful;
         } catch (Exception | StackOverflowError e) { // Xtext also throws checked exceptions sneakily
-            if (cancellation.isOperationCanceledException(e)) {
+            if (isCancellation(e)) {
                 throw Exceptions.sneakyThrow(e);
             }
             Throwable cause = e;
@@ -72,5 +119,17 @@ public class GuardedRequestManager extends RequestManager {
             throw new ResponseErrorException(new ResponseError(ResponseErrorCode.RequestFailed,
                     MESSAGE + " (" + e.getClass().getSimpleName() + "); the server log has the details.", null));
         }
+    }
+
+    /** Cancelled, also when wrapped (a future's ExecutionException of a cancelled request): as Xtext's request manager judges it. */
+    private boolean isCancellation(Throwable e) {
+        Throwable root = e;
+        while (root.getCause() != null && root.getCause() != root) {
+            if (cancellation.isOperationCanceledException(root)) {
+                return true;
+            }
+            root = root.getCause();
+        }
+        return root instanceof CancellationException || cancellation.isOperationCanceledException(root);
     }
 }
