@@ -1,7 +1,6 @@
 package org.miron.lsp.server;
 
 import java.lang.System.Logger.Level;
-import java.util.concurrent.CancellationException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ExecutionException;
@@ -83,7 +82,7 @@ public class GuardedRequestManager extends RequestManager {
             cancellation.checkCanceled(outer);
             result.complete(request.apply(outer));
         } catch (Throwable e) {
-            if (isCancellation(e)) {
+            if (cancellation(e) != null) {
                 result.cancel(true);
             } else {
                 result.completeExceptionally(e);
@@ -105,8 +104,10 @@ public class GuardedRequestManager extends RequestManager {
         } catch (ResponseErrorException meaningful) {
             throw meaningful;
         } catch (Exception | StackOverflowError e) { // Xtext also throws checked exceptions sneakily
-            if (isCancellation(e)) {
-                throw Exceptions.sneakyThrow(e);
+            Throwable cancelled = cancellation(e);
+            if (cancelled != null) {
+                // Unwrapped: Xtext's request manager recognizes only the cancellation itself.
+                throw Exceptions.sneakyThrow(cancelled);
             }
             Throwable cause = e;
             while ((cause instanceof ExecutionException || cause instanceof CompletionException) && cause.getCause() != null) {
@@ -121,15 +122,13 @@ public class GuardedRequestManager extends RequestManager {
         }
     }
 
-    /** Cancelled, also when wrapped (a future's ExecutionException of a cancelled request): as Xtext's request manager judges it. */
-    private boolean isCancellation(Throwable e) {
-        Throwable root = e;
-        while (root.getCause() != null && root.getCause() != root) {
-            if (cancellation.isOperationCanceledException(root)) {
-                return true;
+    /** The cancellation that ended a request, also when wrapped (in a future's ExecutionException); else null. */
+    private Throwable cancellation(Throwable e) {
+        for (Throwable cause = e; cause != null; cause = cause.getCause() == cause ? null : cause.getCause()) {
+            if (cancellation.isOperationCanceledException(cause)) {
+                return cause;
             }
-            root = root.getCause();
         }
-        return root instanceof CancellationException || cancellation.isOperationCanceledException(root);
+        return null;
     }
 }
