@@ -79,6 +79,11 @@ public class BtRuntimeModule extends AbstractBtRuntimeModule {
         return BtLinkingDiagnosticMessageProvider.class;
     }
 
+    // No follow-on errors of a syntax error (issue 23, item 8).
+    public Class<? extends org.eclipse.xtext.validation.IResourceValidator> bindIResourceValidator() {
+        return org.miron.bt.validation.BtResourceValidator.class;
+    }
+
     // Syntax errors carry the BT language's issue code (BtIssueCodes.SYNTAX_ERROR).
     public Class<? extends ISyntaxErrorMessageProvider> bindISyntaxErrorMessageProvider() {
         return BtSyntaxErrorMessageProvider.class;

@@ -48,7 +48,7 @@ public class BtSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
             if (openAbove(tokens, i, expected, found)) {
                 // </BehaviorTree> after an unclosed <Sequence>: the Sequence's close tag is missing.
                 return new SyntaxErrorMessage("<" + expected + "> is not closed: write </" + expected + "> before </"
-                        + found + ">", BtIssueCodes.SYNTAX_ERROR, null);
+                        + found + ">", BtIssueCodes.UNCLOSED_ELEMENT, new String[] { expected });
             }
             return new SyntaxErrorMessage("</" + found + "> does not close <" + expected + ">: write </"
                     + expected + ">", BtIssueCodes.CLOSE_TAG_MISMATCH, new String[] { expected });

@@ -72,6 +72,11 @@ public final class BtIssueCodes {
     public static final String LEAF_WITH_CHILDREN = "bt.leaf-with-children";
     /** A closing tag that does not match its opening tag. Data: the tag to close, e.g. {@code Sequence}. */
     public static final String CLOSE_TAG_MISMATCH = "bt.close-tag-mismatch";
+    /**
+     * An element left open: the close tag of an element around it comes first. Reported on the
+     * outer close tag's name. Data: the tag to close, e.g. {@code Sequence}.
+     */
+    public static final String UNCLOSED_ELEMENT = "bt.unclosed-element";
 
     // ------------------------------------------------------------------ attributes and ports
 

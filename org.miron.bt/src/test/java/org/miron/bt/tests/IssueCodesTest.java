@@ -159,9 +159,9 @@ public class IssueCodesTest {
 
     @Test
     public void syntaxErrorsHaveTheLanguagesCode() throws Exception {
-        String text = "<root>\n  <BehaviorTree ID=\"Main\"><Sequence></BehaviorTree>\n</root>\n";
+        String text = "<root>\n  <BehaviorTree ID=\"Main\"><Sequence name=></Sequence></BehaviorTree>\n</root>\n";
         List<Issue> issues = BtFiles.validate(BtFiles.parse(text, new File(INVALID, "cut.bt")));
-        List<Issue> syntax = issues.stream().filter(i -> i.getMessage().startsWith("mismatched input"))
+        List<Issue> syntax = issues.stream().filter(Issue::isSyntaxError)
                 .collect(Collectors.toList());
         assertFalse(BtFiles.describe(issues), syntax.isEmpty());
         assertEquals(BtFiles.describe(syntax), Set.of(BtIssueCodes.SYNTAX_ERROR),

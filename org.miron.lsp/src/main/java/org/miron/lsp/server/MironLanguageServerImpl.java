@@ -77,6 +77,14 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     public void initialized(InitializedParams params) {
         super.initialized(params);
         fileChanges.start(getLanguageClient(), folders.folders());
+        if (!Boolean.getBoolean("miron.lsp.noRenameWarmUp")) {
+            RenameWarmUp.start(this);
+        }
+    }
+
+    /** The workspace, for {@link RenameWarmUp}. */
+    org.eclipse.xtext.ide.server.WorkspaceManager workspace() {
+        return getWorkspaceManager();
     }
 
     @Override

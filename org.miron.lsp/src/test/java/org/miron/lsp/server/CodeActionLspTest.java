@@ -85,6 +85,30 @@ public class CodeActionLspTest {
         assertEquals(original, fix("intralogistics.bt", sequence, "bt.close-tag-mismatch", "Change to Sequence"));
     }
 
+    /**
+     * Issue 23, item 8: a missing close tag is said as such (not as a bare "mismatched input"), the
+     * quick fix adds it where it belongs, and the trees after it give no follow-on errors.
+     */
+    @Test
+    public void aMissingCloseTagIsAdded() throws Exception {
+        String original = Files.readString(session.workspace.resolve("intralogistics.bt"));
+        String charge = "      <SubTreePlus ID=\"GoTo\" __shared_blackboard=\"false\" x_input=\"-9.33\" y_input=\"2.17\"/>\n";
+        String text = original.replace(charge + "    </Sequence>\n", charge);
+        assertFalse(text.equals(original));
+        String uri = session.client.open(session.workspace.resolve("intralogistics.bt"), text);
+        List<Diagnostic> diagnostics = session.client.awaitDiagnostics(uri,
+                ds -> ds.stream().anyMatch(d -> "bt.unclosed-element".equals(code(d))));
+        assertEquals(diagnostics.toString(), 1, diagnostics.size());
+        assertEquals("<Sequence> is not closed: write </Sequence> before </BehaviorTree>",
+                LspClient.message(diagnostics.get(0)));
+        assertEquals(original, fix("intralogistics.bt", text, "bt.unclosed-element", "Add </Sequence>"));
+        // On the same line as the outer close tag, it is written just before it.
+        String oneLine = original.replace("<Action ID=\"objectdrop\" obj_index=\"-1\"/>\n    </Sequence>",
+                "<Inverter><Action ID=\"objectdrop\" obj_index=\"-1\"/></Sequence>");
+        String fixed = fix("intralogistics.bt", oneLine, "bt.unclosed-element", "Add </Inverter>");
+        assertTrue(fixed, fixed.contains("<Inverter><Action ID=\"objectdrop\" obj_index=\"-1\"/></Inverter></Sequence>"));
+    }
+
     @Test
     public void unknownNameOffersTheClosestOne() throws Exception {
         String text = Files.readString(session.workspace.resolve("intralogistics.miron")).replace("affects roqme.safety++",

@@ -28,6 +28,50 @@ public class ProcessLspTest {
         return command;
     }
 
+    /**
+     * Issue 23, item 12: the server warms rename up in the background after start-up (RenameWarmUp);
+     * it ends, changes no file and sends no edit, and renames answer as before.
+     */
+    @Test
+    public void theRenameWarmUpChangesNothing() throws Exception {
+        Path workspace = Examples.copy("intralogistics");
+        List<String> command = serverCommand();
+        command.add(command.size() - 1, "-Dmiron.lsp.timing=true"); // its milestones on standard error
+        File log = new File(workspace.toFile(), "server.log");
+        Process process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.appendTo(log)).start();
+        try {
+            String bt = java.nio.file.Files.readString(workspace.resolve("intralogistics.bt"));
+            String miron = java.nio.file.Files.readString(workspace.resolve("intralogistics.miron"));
+            LspClient client = new LspClient(process.getInputStream(), process.getOutputStream());
+            client.initialize(workspace);
+            String uri = client.open(workspace.resolve("intralogistics.miron"));
+            client.awaitDiagnostics(uri, d -> !IntralogisticsLspTest.hasErrors(d));
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(180);
+            while (!java.nio.file.Files.readString(log.toPath()).contains("rename warmed up in a .miron")) {
+                assertTrue("no warm-up in the log:\n" + java.nio.file.Files.readString(log.toPath()),
+                        System.nanoTime() < deadline && process.isAlive());
+                Thread.sleep(50);
+            }
+            String logText = java.nio.file.Files.readString(log.toPath());
+            assertTrue(logText, logText.contains("rename warmed up in a .bt") && logText.contains("rename warmed up in a .roqme"));
+            org.eclipse.lsp4j.WorkspaceEdit edit = client.server().getTextDocumentService().rename(
+                    new org.eclipse.lsp4j.RenameParams(new org.eclipse.lsp4j.TextDocumentIdentifier(uri),
+                            IntralogisticsLspTest.positionAfter(miron, "dock : main.Cha"), "Dock"))
+                    .get(60, TimeUnit.SECONDS);
+            String renamed = TextEdits.apply(bt, edit.getChanges().get(LspClient.uri(workspace.resolve("intralogistics.bt"))));
+            assertTrue(renamed, renamed.contains("<BehaviorTree ID=\"Dock\">"));
+            assertEquals(bt, java.nio.file.Files.readString(workspace.resolve("intralogistics.bt")));
+            assertEquals(miron, java.nio.file.Files.readString(workspace.resolve("intralogistics.miron")));
+            assertTrue(client.appliedEdits.toString(), client.appliedEdits.isEmpty());
+            assertTrue(client.published(uri).toString(), !IntralogisticsLspTest.hasErrors(client.published(uri)));
+            client.close();
+            assertTrue("the server did not exit", process.waitFor(60, TimeUnit.SECONDS));
+        } finally {
+            process.destroyForcibly();
+            Folders.delete(workspace);
+        }
+    }
+
     @Test
     public void answersOverStdioAndExitsCleanly() throws Exception {
         Path workspace = Examples.copy("intralogistics");

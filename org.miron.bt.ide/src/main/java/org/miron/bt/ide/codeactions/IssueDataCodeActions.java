@@ -37,13 +37,16 @@ public class IssueDataCodeActions implements ICodeActionService2 {
         /** Add the import line data[0] to the file and write the reference as data[1]. */
         ADD_IMPORT,
         /** Add the include element data[0] after the root start tag. */
-        ADD_INCLUDE
+        ADD_INCLUDE,
+        /** Close the element data[0] before the close tag the diagnostic is on. */
+        CLOSE_ELEMENT
     }
 
     private static final Map<String, Fix> FIXES = Map.ofEntries(
             Map.entry("bt.retry-old-spelling", Fix.RENAME_TAG),
             Map.entry("bt.fallback-star", Fix.RENAME_TAG),
             Map.entry("bt.close-tag-mismatch", Fix.REPLACE),
+            Map.entry("bt.unclosed-element", Fix.CLOSE_ELEMENT),
             Map.entry("bt.unknown-subtree", Fix.REPLACE),
             Map.entry("bt.unknown-main-tree", Fix.REPLACE),
             Map.entry("bt.unknown-reference", Fix.REPLACE),
@@ -108,6 +111,8 @@ public class IssueDataCodeActions implements ICodeActionService2 {
                         addImport(document, diagnostic.getRange(), data));
                 case ADD_INCLUDE -> action(actions, options, diagnostic, "Add " + data.get(0),
                         List.of(insertAfterRootTag(document, data.get(0))));
+                case CLOSE_ELEMENT -> action(actions, options, diagnostic, "Add </" + data.get(0) + ">",
+                        closeBefore(document, diagnostic.getRange(), data.get(0)));
             }
         }
         return actions;
@@ -186,6 +191,25 @@ public class IssueDataCodeActions implements ICodeActionService2 {
         int offset = end < 0 ? 0 : end + 1;
         Position at = document.getPosition(offset);
         return new TextEdit(new Range(at, at), "\n  " + include);
+    }
+
+    /**
+     * The diagnostic is on the name in the outer close tag ({@code </BehaviorTree>}): the missing
+     * close tag goes just before it, on a line of its own one level deeper when the outer close tag
+     * starts its line.
+     */
+    private static List<TextEdit> closeBefore(Document document, Range outerName, String tag) {
+        String text = document.getContents();
+        int close = text.lastIndexOf("</", document.getOffSet(outerName.getStart()));
+        if (close < 0) {
+            return List.of();
+        }
+        int lineStart = text.lastIndexOf('\n', close - 1) + 1;
+        String indent = text.substring(lineStart, close);
+        boolean ownLine = indent.isBlank();
+        Position at = document.getPosition(ownLine ? lineStart : close);
+        String closing = "</" + tag + ">";
+        return List.of(new TextEdit(new Range(at, at), ownLine ? indent + (indent.contains("\t") ? "\t" : "  ") + closing + "\n" : closing));
     }
 
     private static String text(Document document, Range range) {
