@@ -1,0 +1,172 @@
+package org.miron.runtime.sim;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.logging.Logger;
+import org.miron.executor.skills.SkillHandle;
+import org.miron.executor.skills.SkillRequest;
+import org.miron.runtime.Json;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+import org.miron.runtime.skill.ParameterChange;
+import org.miron.runtime.skill.SkillBehaviour;
+import org.miron.runtime.sim.WorldModel.Publication;
+
+/**
+ * The mock skill interface's skills acting on a world, on the wall clock: a pushed skill takes the
+ * time the world gives it and has its effects there, a change-parameter query sets the world's
+ * parameter, the processes run, and the world's contexts go on the bus ({@code roqme.context}, as
+ * its publication rules say) for the RoQME provider and the engine. The world's semantics are the
+ * simulator's ({@link WorldDriver}); only the clock differs: world time is the wall time since
+ * {@link #begin} divided by {@code timeScale} (0.5: the world runs twice as fast).
+ */
+public final class LiveWorld implements SkillBehaviour {
+    private static final Logger LOG = Logger.getLogger(LiveWorld.class.getName());
+    private static final int MAX_STEPS = 1000; // steps per advance: something that re-arms at once cannot hang the mock
+
+    private final WorldModel model;
+    private final long seed;
+    private final double timeScale;
+    private final Map<String, String> namespaces;
+    private final String busIn;
+    private BusClient bus;
+    private final Map<Long, SkillHandle> running = new LinkedHashMap<>();
+    private volatile boolean beginAsked;
+    private WorldDriver driver;
+    private Results results;
+    private long wallStart = -1;
+
+    /**
+     * @param namespaces each published context's RoQME namespace, by name
+     * @param busIn      the broker's XSUB endpoint the contexts are published to
+     */
+    public LiveWorld(WorldModel model, long seed, double timeScale, Map<String, String> namespaces, String busIn) {
+        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
+            throw new IllegalArgumentException("time scale must be a positive number, got " + timeScale);
+        }
+        this.model = model;
+        this.seed = seed;
+        this.timeScale = timeScale;
+        this.namespaces = Map.copyOf(namespaces);
+        this.busIn = busIn;
+    }
+
+    /** Starts the world's clock (from any thread): at once, or when the first skill is pushed if earlier. */
+    public LiveWorld begin() {
+        beginAsked = true;
+        return this;
+    }
+
+    @Override
+    public void start(Results sink, long nowMs) {
+        this.results = sink;
+        this.bus = new BusClient("world", busIn, null, List.of(), (t, b) -> { }).start();
+    }
+
+    private boolean started(long nowMs) {
+        if (driver == null && beginAsked) {
+            wallStart = nowMs;
+            driver = new WorldDriver(model, seed, this::publish);
+            driver.start(0);
+            LOG.info("world started: " + model.source());
+        }
+        return driver != null;
+    }
+
+    private long worldTime(long nowMs) {
+        return Math.round((nowMs - wallStart) / timeScale);
+    }
+
+    @Override
+    public void push(long id, JsonNode skill, long nowMs) {
+        beginAsked = true;
+        started(nowMs);
+        catchUp(nowMs, true);
+        Map<String, Object> inputs = new LinkedHashMap<>();
+        skill.path("in-attribute").fields().forEachRemaining(f -> inputs.put(f.getKey(), value(f.getValue())));
+        SkillHandle handle = driver.world().push(new SkillRequest(skill.path("name").asText(), inputs));
+        running.put(id, handle);
+        handle.result().thenAccept(r -> {
+            running.remove(id);
+            results.publish(id, r.outcome().name(), Json.MAPPER.nullNode(), Json.object());
+        });
+        driver.publishDue(); // e.g. Docked := false at the start of a move
+    }
+
+    private static Object value(JsonNode v) {
+        return v.isNumber() ? (Object) v.asDouble() : v.isBoolean() ? (Object) v.asBoolean() : v.asText();
+    }
+
+    @Override
+    public void parameter(ParameterChange change, long nowMs) {
+        if (!started(nowMs)) {
+            return;
+        }
+        catchUp(nowMs, true);
+        JsonNode v = change.values().path("1");
+        driver.world().setParameter(change.parameter(), v.isBoolean() ? (Object) v.asBoolean() : (Object) v.asDouble());
+        driver.publishDue();
+    }
+
+    @Override
+    public void abortAll(long nowMs) {
+        if (started(nowMs)) {
+            catchUp(nowMs, true);
+            List.copyOf(running.values()).forEach(SkillHandle::abort);
+        }
+    }
+
+    @Override
+    public long nextDue(long nowMs) {
+        if (driver == null) {
+            return beginAsked ? nowMs : nowMs + 50;
+        }
+        long next = driver.nextEvent();
+        return next == Long.MAX_VALUE ? Long.MAX_VALUE : wallStart + (long) Math.ceil(next * timeScale);
+    }
+
+    @Override
+    public void advance(long nowMs) {
+        if (started(nowMs)) {
+            catchUp(nowMs, false);
+        }
+    }
+
+    /**
+     * Brings the world to now: one step at the current world time while something is due by then
+     * (an instant happens when the wall clock says, late by however long the machine took, as in
+     * {@link Simulation#realTime}); {@code always}: a step even if nothing is due (a request arrives).
+     */
+    private void catchUp(long nowMs, boolean always) {
+        long t = Math.max(worldTime(nowMs), driver.world().now());
+        for (int i = 0; i < MAX_STEPS && (driver.nextEvent() <= t || (always && i == 0)); i++) {
+            driver.step(t);
+            driver.publishDue();
+        }
+    }
+
+    private void publish(Publication p, Object value, boolean changed) {
+        ObjectNode body = Json.object();
+        body.put("name", p.context());
+        body.put("namespace", namespaces.getOrDefault(p.context(), ""));
+        body.put("type", p.event() != null ? "event" : p.type().kind());
+        body.set("value", Json.MAPPER.valueToTree(value));
+        body.put("time", System.currentTimeMillis());
+        if (p.event() != null) {
+            bus.publish(Topics.CONTEXT, Json.write(body)); // an event happens once: not replayed to late subscribers
+        } else {
+            bus.publishRetained(Topics.CONTEXT + "\0" + body.path("namespace").asText() + "\0" + p.context(),
+                    Topics.CONTEXT, Json.write(body));
+        }
+    }
+
+    @Override
+    public void close() {
+        if (bus != null) {
+            bus.close();
+        }
+    }
+}
