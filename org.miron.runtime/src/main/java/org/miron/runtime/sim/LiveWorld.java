@@ -136,13 +136,19 @@ public final class LiveWorld implements SkillBehaviour {
     }
 
     /**
-     * Brings the world to now: one step at the current world time while something is due by then
-     * (an instant happens when the wall clock says, late by however long the machine took, as in
-     * {@link Simulation#realTime}); {@code always}: a step even if nothing is due (a request arrives).
+     * Brings the world to now: what fell due since the last step happens instant by instant at its
+     * own world time, as on the virtual clock, so the world's course is the simulator's; only the
+     * requests (a push, a parameter) land when the wall clock says. {@code always}: a step at now
+     * even if nothing is due (a request arrives).
      */
     private void catchUp(long nowMs, boolean always) {
-        long t = Math.max(worldTime(nowMs), driver.world().now());
-        for (int i = 0; i < MAX_STEPS && (driver.nextEvent() <= t || (always && i == 0)); i++) {
+        World world = driver.world();
+        long t = Math.max(worldTime(nowMs), world.now());
+        for (int i = 0; i < MAX_STEPS && driver.nextEvent() <= t; i++) {
+            driver.step(Math.max(driver.nextEvent(), world.now()));
+            driver.publishDue();
+        }
+        if (always) {
             driver.step(t);
             driver.publishDue();
         }
