@@ -222,7 +222,8 @@ public final class Demo {
     private void startProviderAndEngine(Engine engine, LiveProvider provider) throws InterruptedException, EngineStartException {
         if (provider != null) {
             out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
-                    + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
+                    + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of "
+                    + (world != null ? "world" : "scenario") + " time.");
             provider.start();
             if (!provider.awaitSubscribed(10_000)) {
                 throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");
