@@ -19,7 +19,9 @@ import org.miron.runtime.skill.TableSkills;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code miron skill-mock}: the SmartSoft ComponentSkillInterface stand-in, its skills from a table
@@ -58,6 +60,13 @@ public final class SkillMockCommand implements Callable<Integer> {
     @Mixin
     BrokerEndpoints.BusIn busIn = new BrokerEndpoints.BusIn();
 
+    @Spec
+    CommandSpec spec;
+
+    private PrintWriter err() {
+        return spec.commandLine().getErr();
+    }
+
     @Override
     public Integer call() {
         SkillBehaviour behaviour;
@@ -71,16 +80,17 @@ public final class SkillMockCommand implements Callable<Integer> {
                 behaviour = new TableSkills(skills == null ? SkillTable.defaults() : SkillTable.load(skills));
             }
         } catch (IOException e) {
-            System.err.println("miron skill-mock: error: cannot read skill table: " + e.getMessage());
+            err().println("miron skill-mock: error: cannot read skill table: " + e.getMessage());
             return 2;
         }
         SkillInterfaceMock mock;
         try {
             mock = new SkillInterfaceMock(rep, pub, behaviour).start();
         } catch (IllegalStateException e) {
-            System.err.println("miron skill-mock: error: " + e.getMessage());
+            err().println("miron skill-mock: error: " + e.getMessage());
             return 2;
         }
+        err().flush();
         if (behaviour instanceof LiveWorld live) {
             live.begin();
         }
@@ -90,11 +100,11 @@ public final class SkillMockCommand implements Callable<Integer> {
     /** The world checked against the model (generated into a temporary folder); null after saying why not. */
     private LiveWorld world() {
         if (model == null || skills != null || !(timeScale > 0)) {
-            System.err.println("miron skill-mock: error: --world needs --model MODEL.miron, a positive --time-scale, and no --skills");
+            err().println("miron skill-mock: error: --world needs --model MODEL.miron, a positive --time-scale, and no --skills");
             return null;
         }
         if (!Files.isRegularFile(world) || !Files.isRegularFile(model)) {
-            System.err.println((Files.isRegularFile(world) ? model : world) + ": error: no such file");
+            err().println((Files.isRegularFile(world) ? model : world) + ": error: no such file");
             return null;
         }
         try {
@@ -106,16 +116,16 @@ public final class SkillMockCommand implements Callable<Integer> {
             generate.setOut(new PrintWriter(log));
             generate.setErr(new PrintWriter(log));
             if (generate.execute("generate", "-o", generated.toString(), model.toString()) != 0) {
-                System.err.print(log);
+                err().print(log);
                 return null;
             }
             return ModelWorld.live(world, generated.resolve(name + ".ext.xml"),
                     ModelReader.read(generated.resolve(name + RoqmeRuntimeModel.SUFFIX)), seed, timeScale, busIn.endpoint);
         } catch (WorldException e) {
-            e.problems().forEach(System.err::println);
+            e.problems().forEach(err()::println);
             return null;
         } catch (IOException | ModelException | RuntimeException e) {
-            System.err.println("miron skill-mock: error: " + e.getMessage());
+            err().println("miron skill-mock: error: " + e.getMessage());
             return null;
         }
     }
