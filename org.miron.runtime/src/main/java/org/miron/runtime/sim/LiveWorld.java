@@ -38,6 +38,9 @@ public final class LiveWorld implements SkillBehaviour {
     private WorldDriver driver;
     private Results results;
     private long wallStart = -1;
+    private final Map<String, Object> earlyParameters = new LinkedHashMap<>(); // changed before the world began
+    private int toldProblems;
+    private String broken; // a world expression that could not run: the world stops, skills fail
 
     /**
      * @param namespaces each published context's RoQME namespace, by name
@@ -70,6 +73,7 @@ public final class LiveWorld implements SkillBehaviour {
         if (driver == null && beginAsked) {
             wallStart = nowMs;
             driver = new WorldDriver(model, seed, this::publish);
+            earlyParameters.forEach(driver.world()::setParameter);
             driver.start(0);
             LOG.info("world started: " + model.source());
         }
@@ -83,8 +87,16 @@ public final class LiveWorld implements SkillBehaviour {
     @Override
     public void push(long id, JsonNode skill, long nowMs) {
         beginAsked = true;
-        started(nowMs);
-        catchUp(nowMs, true);
+        if (!guarded(() -> {
+            started(nowMs);
+            catchUp(nowMs, true);
+            start(id, skill);
+        })) {
+            results.publish(id, "ERROR", Json.MAPPER.nullNode(), Json.object());
+        }
+    }
+
+    private void start(long id, JsonNode skill) {
         Map<String, Object> inputs = new LinkedHashMap<>();
         skill.path("in-attribute").fields().forEachRemaining(f -> inputs.put(f.getKey(), value(f.getValue())));
         SkillHandle handle = driver.world().push(new SkillRequest(skill.path("name").asText(), inputs));
@@ -102,25 +114,54 @@ public final class LiveWorld implements SkillBehaviour {
 
     @Override
     public void parameter(ParameterChange change, long nowMs) {
-        if (!started(nowMs)) {
-            return;
-        }
-        catchUp(nowMs, true);
         JsonNode v = change.values().path("1");
-        driver.world().setParameter(change.parameter(), v.isBoolean() ? (Object) v.asBoolean() : (Object) v.asDouble());
-        driver.publishDue();
+        Object value = v.isBoolean() ? (Object) v.asBoolean() : (Object) v.asDouble();
+        guarded(() -> {
+            if (!started(nowMs)) {
+                earlyParameters.put(change.parameter(), value);
+                return;
+            }
+            catchUp(nowMs, true);
+            driver.world().setParameter(change.parameter(), value);
+            driver.publishDue();
+        });
     }
 
     @Override
     public void abortAll(long nowMs) {
-        if (started(nowMs)) {
-            catchUp(nowMs, true);
-            List.copyOf(running.values()).forEach(SkillHandle::abort);
+        guarded(() -> {
+            if (started(nowMs)) {
+                catchUp(nowMs, true);
+            }
+        });
+        List.copyOf(running.values()).forEach(SkillHandle::abort);
+    }
+
+    /**
+     * Runs a step of the world unless an expression of it failed before; one that fails now stops
+     * the world (logged once; the running skills fail) instead of the mock. False when stopped.
+     */
+    private boolean guarded(Runnable step) {
+        if (broken != null) {
+            return false;
+        }
+        try {
+            step.run();
+            return true;
+        } catch (RuntimeException e) {
+            broken = String.valueOf(e.getMessage());
+            LOG.severe("world " + model.source() + " stopped: " + broken);
+            List.copyOf(running.values()).forEach(h -> h.result().complete(
+                    org.miron.executor.skills.SkillResult.of(org.miron.executor.skills.SkillResult.Outcome.ERROR)));
+            return false;
         }
     }
 
     @Override
     public long nextDue(long nowMs) {
+        if (broken != null) {
+            return Long.MAX_VALUE;
+        }
         if (driver == null) {
             return beginAsked ? nowMs : nowMs + 50;
         }
@@ -130,9 +171,11 @@ public final class LiveWorld implements SkillBehaviour {
 
     @Override
     public void advance(long nowMs) {
-        if (started(nowMs)) {
-            catchUp(nowMs, false);
-        }
+        guarded(() -> {
+            if (started(nowMs)) {
+                catchUp(nowMs, false);
+            }
+        });
     }
 
     /**
@@ -151,6 +194,10 @@ public final class LiveWorld implements SkillBehaviour {
         if (always) {
             driver.step(t);
             driver.publishDue();
+        }
+        List<String> problems = world.problems();
+        for (; toldProblems < problems.size(); toldProblems++) {
+            LOG.warning("world " + model.source() + ": " + problems.get(toldProblems)); // e.g. a skill sent to no place of the world
         }
     }
 
