@@ -46,8 +46,12 @@ public class DemoCommandTest {
         assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch): rule noBattery (power_autonomy = 0."));
         assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge (behaviour tree switches branch): the preset: "
                 + "no rule or impact asks for another value"));
-        // The virtual clock against the real one: the simulator on the same world and seed takes
-        // the same decisions in the same order (the live run may stop a little earlier or later).
+        // The virtual clock against the real one: the simulator on the same world and seed takes the
+        // same decisions in the same order (the live run may stop a little earlier or later), compared
+        // per variation point. The live engine decides on each estimate as it arrives, so where the
+        // model's choice of speed is marginal (+0.02 either way once the person has gone) it may
+        // answer an in-between state the virtual clock, all of an instant's inputs at once, never
+        // shows: the speed is compared through the person's visit, the task through the whole run.
         List<String> live = new ArrayList<>();
         for (String line : Files.readAllLines(temp.getRoot().toPath().resolve("decisions.jsonl"))) {
             live.addAll(changes(org.miron.runtime.Json.MAPPER.readTree(line)));
@@ -61,8 +65,21 @@ public class DemoCommandTest {
         List<String> virtual = new ArrayList<>();
         new org.miron.runtime.sim.Simulation(setup, org.miron.runtime.sim.Policy.parse("adaptive"), 1, 150_000, 150_000).run()
                 .timeline().stream().filter(e -> e.topic().equals("miron.decision")).forEach(e -> virtual.addAll(changes(e.body())));
-        assertTrue(live + " vs " + virtual, live.size() >= 5 && virtual.size() >= live.size());
-        assertEquals(virtual.subList(0, live.size()), live);
+        String both = "live " + live + " vs virtual " + virtual;
+        List<String> speeds = List.of("maxVelocity=100", "maxVelocity=10", "maxVelocity=100");
+        assertEquals(both, speeds, only("maxVelocity", virtual).subList(0, 3));
+        assertEquals(both, speeds, only("maxVelocity", live).subList(0, 3));
+        for (List<String> run : List.of(live, virtual)) { // slowed down for the person before the battery ran low
+            assertTrue(both, run.indexOf("maxVelocity=10") < run.indexOf("task=dock"));
+        }
+        List<String> liveTasks = only("task", live);
+        List<String> virtualTasks = only("task", virtual);
+        assertTrue(both, liveTasks.size() >= 3 && virtualTasks.size() >= liveTasks.size());
+        assertEquals(both, virtualTasks.subList(0, liveTasks.size()), liveTasks);
+    }
+
+    private static List<String> only(String varpoint, List<String> changes) {
+        return changes.stream().filter(c -> c.startsWith(varpoint + "=")).toList();
     }
 
     /** What a decision changed: varpoint=value, in the order the engine lists them. */

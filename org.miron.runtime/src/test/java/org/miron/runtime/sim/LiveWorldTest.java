@@ -119,6 +119,36 @@ public class LiveWorldTest {
                         .allMatch(m -> m.body().path("value").asDouble() > 20 - 1e-6));
     }
 
+    @Test
+    public void anAbortedMoveStopsDrainingAndNeverArrives() throws Exception {
+        assertNotNull(probe.await("roqme.context", b -> b.path("name").asText().equals("Battery"), TIMEOUT));
+        awaitSubscriberConnected();
+        query("{\"id\":5,\"msg-type\":\"push-skill\",\"skill\":{\"name\":\"MoveTo\",\"in-attribute\":{\"x\": 10, \"y\": 0}}}");
+        query("{\"id\":6,\"msg-type\":\"query\",\"query\":{\"type\":\"abort-current-skill\"}}");
+        assertEquals("ABORT", result(5).path("result").path("result").asText());
+        // from the abort on the battery holds: two readings published after it are the same, above what a whole move leaves
+        long aborted = System.currentTimeMillis();
+        double[] after = batteryAfter(aborted, 2);
+        assertEquals(after[0], after[1], 1e-9);
+        assertTrue("drained " + (50 - after[0]) + " % before the abort", after[0] > 40);
+        assertTrue(probe.messages("roqme.context").stream().noneMatch(m -> m.body().path("name").asText().equals("Arrived")));
+    }
+
+    /** The first {@code n} Battery readings the world published after wall time {@code t} (their own "time"). */
+    private double[] batteryAfter(long t, int n) throws InterruptedException {
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (System.currentTimeMillis() < end) {
+            double[] found = probe.messages("roqme.context").stream()
+                    .filter(m -> m.body().path("name").asText().equals("Battery") && m.body().path("time").asLong() > t)
+                    .mapToDouble(m -> m.body().path("value").asDouble()).limit(n).toArray();
+            if (found.length == n) {
+                return found;
+            }
+            Thread.sleep(20);
+        }
+        throw new AssertionError("fewer than " + n + " Battery readings after " + t);
+    }
+
     private JsonNode awaitBattery(double value) throws InterruptedException {
         return probe.await("roqme.context", b -> b.path("name").asText().equals("Battery")
                 && Math.abs(b.path("value").asDouble() - value) < 1e-6, TIMEOUT);
@@ -127,6 +157,11 @@ public class LiveWorldTest {
     /** Pushes a move and waits for its result. */
     private JsonNode push(long id, String in) throws Exception {
         query("{\"id\":" + id + ",\"msg-type\":\"push-skill\",\"skill\":{\"name\":\"MoveTo\",\"in-attribute\":" + in + "}}");
+        return result(id);
+    }
+
+    /** The result of skill {@code id} (the probes' results skipped). */
+    private JsonNode result(long id) throws Exception {
         results.setReceiveTimeOut((int) TIMEOUT);
         while (true) {
             String r = results.recvStr();
