@@ -71,7 +71,7 @@ public class DemoCommand implements Callable<Integer> {
             + "the model has no world: demo/scenario.json next to the model, else the intralogistics example's)")
     Path scenario;
 
-    @Option(names = "--skills", paramLabel = "FILE", description = "the mock skill table (default: demo/skills.json next to the model, else the intralogistics example's)")
+    @Option(names = "--skills", paramLabel = "FILE", description = "the mock skill table, for a scripted scenario (default: demo/skills.json next to the model, else the intralogistics example's)")
     Path skills;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "miron-demo",
@@ -127,10 +127,10 @@ public class DemoCommand implements Callable<Integer> {
         if (!Files.isRegularFile(modelFile)) {
             return usage(modelFile + ": error: no such file");
         }
-        if (world != null && scenario != null) {
-            return usage("--world and --scenario exclude each other: the contexts come from one of them");
+        if (world != null && (scenario != null || skills != null)) {
+            return usage("--world excludes --scenario and --skills: the world publishes the contexts and says how long its skills take");
         }
-        Path worldFile = world != null ? world : scenario != null ? null : worldOf(modelFile);
+        Path worldFile = world != null ? world : scenario != null || skills != null ? null : worldOf(modelFile);
         Path scenarioFile = worldFile != null ? null : scenario != null ? scenario : input(modelFile, "scenario.json", home, console);
         Path skillsFile = worldFile != null ? null : skills != null ? skills : input(modelFile, "skills.json", home, console);
         for (Path file : new Path[] { worldFile, scenarioFile, skillsFile }) {

@@ -183,6 +183,19 @@ public class DemoCommandTest {
     }
 
     @Test
+    public void aWorldSaysHowLongItsSkillsTakeAndPublishesTheContexts() {
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setErr(new PrintWriter(err, true));
+        String world = new File(ROOT, "examples/intralogistics/demo/world.json").getPath();
+        assertEquals(2, cli.execute("demo", "--world", world, "--skills", new File(ROOT, "examples/intralogistics/demo/skills.json").getPath(),
+                "--out", temp.getRoot().getPath()));
+        assertEquals(2, cli.execute("demo", "--world", world, "--scenario", new File(ROOT, "examples/intralogistics/demo/scenario.json").getPath(),
+                "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("--world excludes --scenario and --skills"));
+    }
+
+    @Test
     public void aMissingScenarioIsAUsageError() {
         StringWriter err = new StringWriter();
         CommandLine cli = MironCli.commandLine();
