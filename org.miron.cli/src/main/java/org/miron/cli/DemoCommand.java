@@ -25,6 +25,9 @@ import org.miron.runtime.Endpoints;
 import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.player.Scenario;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.runtime.sim.Durations;
+import org.miron.runtime.sim.LiveWorld;
+import org.miron.runtime.sim.WorldException;
 
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -34,15 +37,17 @@ import picocli.CommandLine;
 
 /**
  * `miron demo`: generates a model (the intralogistics example by default) and runs the whole loop on
- * it in one JVM (broker, RoQME provider, engine, mock skill interface, BT executor, scenario player
- * publishing contexts), telling each fired observation and adaptation as it happens and writing a
- * timeline report at the end. Its inputs come from demo/ next to the model; a scenario that does
- * not fit the model is refused (README.md, docs/wire-formats.md).
+ * it in one JVM (broker, RoQME provider, engine, mock skill interface, BT executor), telling each
+ * fired observation and adaptation as it happens and writing a timeline report at the end. The
+ * robot's contexts come from a world the mock's skills act on (closed loop: demo/world.json next to
+ * the model, else world.json next to it, or --world) or from a scripted scenario (demo/scenario.json
+ * or --scenario; a scenario that does not fit the model is refused). README.md, docs/demo.md.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "Runs the MIRoN loop on a model in one process: a scenario publishes the robot's contexts, the "
-                + "RoQME provider computes the metrics from the model's observations, the engine adapts the behaviour "
-                + "tree and the skills; writes OUT/report.html.",
+        description = "Runs the MIRoN loop on a model in one process: the skills act on a simulated world that publishes "
+                + "the robot's contexts (closed loop; or a scripted scenario publishes them), the RoQME provider computes "
+                + "the metrics from the model's observations, the engine adapts the behaviour tree and the skills; "
+                + "writes OUT/report.html.",
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = { "0:the demo ran", "1:the model has errors", "2:usage or start-up error (e.g. no minizinc, a scenario input the model does not read)" })
 public class DemoCommand implements Callable<Integer> {
@@ -51,10 +56,22 @@ public class DemoCommand implements Callable<Integer> {
     @Option(names = "--model", paramLabel = "FILE.miron", description = "the MIRoN model (default: the intralogistics example)")
     Path model;
 
-    @Option(names = "--scenario", paramLabel = "FILE", description = "the scenario to play (default: demo/scenario.json next to the model, else the intralogistics example's)")
+    @Option(names = "--world", paramLabel = "FILE", description = "run closed-loop on this world file (docs/simulator.md; "
+            + "default: demo/world.json next to the model, else world.json next to it, unless the model has a demo/scenario.json)")
+    Path world;
+
+    @Option(names = "--duration", paramLabel = "TIME", defaultValue = "60s",
+            description = "how long the world runs, in world time (closed loop only; default: ${DEFAULT-VALUE})")
+    String duration;
+
+    @Option(names = "--seed", paramLabel = "S", defaultValue = "1", description = "the world's random seed (default: ${DEFAULT-VALUE})")
+    long seed;
+
+    @Option(names = "--scenario", paramLabel = "FILE", description = "play this scripted scenario instead of a world (default when "
+            + "the model has no world: demo/scenario.json next to the model, else the intralogistics example's)")
     Path scenario;
 
-    @Option(names = "--skills", paramLabel = "FILE", description = "the mock skill table (default: demo/skills.json next to the model, else the intralogistics example's)")
+    @Option(names = "--skills", paramLabel = "FILE", description = "the mock skill table, for a scripted scenario (default: demo/skills.json next to the model, else the intralogistics example's)")
     Path skills;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "miron-demo",
@@ -62,7 +79,7 @@ public class DemoCommand implements Callable<Integer> {
     Path out;
 
     @Option(names = "--time-scale", paramLabel = "F", defaultValue = "1.0",
-            description = "scenario time scale: 0.5 plays twice as fast (default: ${DEFAULT-VALUE})")
+            description = "time scale of the world or scenario: 0.5 runs twice as fast (default: ${DEFAULT-VALUE})")
     double timeScale;
 
     @Option(names = "--bt-format", paramLabel = "3|4",
@@ -110,15 +127,28 @@ public class DemoCommand implements Callable<Integer> {
         if (!Files.isRegularFile(modelFile)) {
             return usage(modelFile + ": error: no such file");
         }
-        Path scenarioFile = scenario != null ? scenario : input(modelFile, "scenario.json", home, console);
-        Path skillsFile = skills != null ? skills : input(modelFile, "skills.json", home, console);
-        for (Path file : new Path[] { scenarioFile, skillsFile }) {
-            if (!Files.isRegularFile(file)) {
+        if (world != null && (scenario != null || skills != null)) {
+            return usage("--world excludes --scenario and --skills: the world publishes the contexts and says how long its skills take");
+        }
+        Path worldFile = world != null ? world : scenario != null || skills != null ? null : worldOf(modelFile);
+        Path scenarioFile = worldFile != null ? null : scenario != null ? scenario : input(modelFile, "scenario.json", home, console);
+        Path skillsFile = worldFile != null ? null : skills != null ? skills : input(modelFile, "skills.json", home, console);
+        for (Path file : new Path[] { worldFile, scenarioFile, skillsFile }) {
+            if (file != null && !Files.isRegularFile(file)) {
                 return usage(file + ": error: no such file");
             }
         }
         if (!(timeScale > 0)) {
             return usage("--time-scale must be positive");
+        }
+        long worldMs;
+        try {
+            worldMs = Durations.parseMs(duration);
+        } catch (IllegalArgumentException e) {
+            return usage(e.getMessage());
+        }
+        if (worldFile != null && noProvider) {
+            return usage("--no-provider plays a scenario's scripted estimates: give --scenario too (a world publishes only contexts)");
         }
         if (btFormat != null && btFormat != 3 && btFormat != 4) {
             return usage("--bt-format must be 3 or 4, not " + btFormat);
@@ -155,52 +185,59 @@ public class DemoCommand implements Callable<Integer> {
             // The narration tells what matters; component logs stay available with --verbose.
             Logger.getLogger("").setLevel(Level.SEVERE);
         }
-        Scenario steps;
-        SkillTable table;
+        Scenario steps = null;
+        SkillTable table = null;
         IoModel io;
         CompiledModel roqme = null;
         RoqmeModel roqmeModel = null;
+        Path tree = generated.resolve(name + ".ext.xml");
         try {
-            steps = Scenario.load(scenarioFile);
-            table = SkillTable.load(skillsFile);
             io = IoModel.load(generated.resolve(name + ".io.json"));
             Path roqmeJson = generated.resolve(name + RoqmeRuntimeModel.SUFFIX);
             if (!noProvider && Files.isRegularFile(roqmeJson)) {
                 roqmeModel = ModelReader.read(roqmeJson);
                 roqme = Compiler.compile(roqmeModel, new LinkedHashMap<>());
             }
+            if (worldFile == null) {
+                steps = Scenario.load(scenarioFile);
+                table = SkillTable.load(skillsFile);
+            } else if (roqmeModel == null) {
+                return usage("miron demo: error: " + modelFile.getFileName() + " has no RoQME part: a world's contexts "
+                        + "have no metrics to feed; give a --scenario");
+            }
         } catch (ModelException e) {
             return usage(e.getMessage());
         } catch (IOException | RuntimeException e) {
             return usage("miron demo: error: " + e.getMessage());
         }
-        List<String> unknown = ScenarioInputs.unknown(steps, scenarioFile.getFileName().toString(), io,
-                roqmeModel, modelFile.getFileName().toString());
-        if (!unknown.isEmpty()) {
-            PrintWriter err = spec.commandLine().getErr();
-            unknown.forEach(err::println);
-            if (!allowUnknownInputs) {
-                return usage("miron demo: error: " + scenarioFile + " was not written for " + modelFile.getFileName()
-                        + " (the engine would decide on its defaults); give the model's own --scenario, or pass "
-                        + "--allow-unknown-inputs to play it anyway");
+        Endpoints endpoints = Endpoints.freeLoopback();
+        LiveWorld liveWorld = null;
+        if (worldFile != null) {
+            try {
+                liveWorld = ModelWorld.live(worldFile, tree, roqmeModel, seed, timeScale, endpoints.busIn());
+            } catch (WorldException e) {
+                PrintWriter err = spec.commandLine().getErr();
+                e.problems().forEach(err::println);
+                err.flush();
+                return 1;
+            } catch (IOException | RuntimeException e) {
+                return usage("miron demo: error: " + worldFile + ": " + e.getMessage());
             }
-            err.println("miron demo: warning: playing it anyway (--allow-unknown-inputs): the model ignores these inputs");
-            err.flush();
+        } else if (refused(steps, scenarioFile, io, roqmeModel, modelFile, console)) {
+            return 2;
         }
-        long scripted = steps.steps().stream().filter(st -> st.topic().equals(Topics.ESTIMATE)).count();
-        if (roqme != null && scripted > 0) {
-            console.println("MIRoN demo: " + scenarioFile.getFileName() + " scripts " + scripted + " estimates while the "
-                    + "RoQME provider computes the metrics: both are published (--no-provider plays only the scripted ones)");
-        }
-        Path tree = generated.resolve(name + ".ext.xml");
         console.println("MIRoN demo: broker, " + (roqme == null ? "" : "RoQME provider, ")
-                + "engine, skill interface mock, BT executor and scenario player start;"
-                + " the scenario lasts about " + Math.round(lastStep(steps) * timeScale / 1000.0) + " s.");
+                + "engine, skill interface mock, BT executor" + (worldFile == null
+                        ? " and scenario player start; the scenario lasts about " + Math.round(lastStep(steps) * timeScale / 1000.0) + " s."
+                        : " start; the skills act on " + home.toAbsolutePath().normalize().relativize(worldFile.toAbsolutePath().normalize())
+                                + ", which publishes the robot's contexts (closed loop) for " + duration + " of world time, about "
+                                + Math.round(worldMs * timeScale / 1000.0) + " s."));
         console.println("    time  who     what");
         Demo.Result result;
         try {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
-                    out, Endpoints.freeLoopback(), console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
+                    out, endpoints, console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
+                    .world(liveWorld, worldMs)
                     .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());
@@ -214,6 +251,50 @@ public class DemoCommand implements Callable<Integer> {
         console.println("  report:       " + result.report() + "   (open it in a browser)");
         console.flush();
         return 0;
+    }
+
+    /** A scenario that does not fit the model is refused unless --allow-unknown-inputs; a scripted estimate is said. */
+    private boolean refused(Scenario steps, Path scenarioFile, IoModel io, RoqmeModel roqmeModel, Path modelFile,
+            PrintWriter console) {
+        List<String> unknown = ScenarioInputs.unknown(steps, scenarioFile.getFileName().toString(), io,
+                roqmeModel, modelFile.getFileName().toString());
+        if (!unknown.isEmpty()) {
+            PrintWriter err = spec.commandLine().getErr();
+            unknown.forEach(err::println);
+            if (!allowUnknownInputs) {
+                usage("miron demo: error: " + scenarioFile + " was not written for " + modelFile.getFileName()
+                        + " (the engine would decide on its defaults); give the model's own --scenario, or pass "
+                        + "--allow-unknown-inputs to play it anyway");
+                return true;
+            }
+            err.println("miron demo: warning: playing it anyway (--allow-unknown-inputs): the model ignores these inputs");
+            err.flush();
+        }
+        long scripted = steps.steps().stream().filter(st -> st.topic().equals(Topics.ESTIMATE)).count();
+        if (roqmeModel != null && scripted > 0) {
+            console.println("MIRoN demo: " + scenarioFile.getFileName() + " scripts " + scripted + " estimates while the "
+                    + "RoQME provider computes the metrics: both are published (--no-provider plays only the scripted ones)");
+        }
+        return false;
+    }
+
+    /**
+     * The world the demo runs closed-loop on when neither --world nor --scenario is given:
+     * {@code demo/world.json} next to the model, else {@code world.json} next to it, unless the
+     * model's demo is scripted ({@code demo/scenario.json}); null: none.
+     */
+    private static Path worldOf(Path modelFile) {
+        Path dir = modelFile.toAbsolutePath().getParent();
+        if (dir == null) {
+            return null;
+        }
+        if (Files.isRegularFile(dir.resolve("demo/world.json"))) {
+            return dir.resolve("demo/world.json");
+        }
+        if (Files.isRegularFile(dir.resolve("demo/scenario.json"))) {
+            return null;
+        }
+        return Files.isRegularFile(dir.resolve("world.json")) ? dir.resolve("world.json") : null;
     }
 
     /**

@@ -21,8 +21,9 @@ import picocli.CommandLine;
 
 /**
  * `miron demo` end to end, as a newcomer runs it: the intralogistics example is generated, the
- * whole loop runs on loopback with the real minizinc, the console tells the adaptations in order
- * and the report shows them.
+ * whole loop runs on loopback with the real minizinc, closed-loop on the example's demo world (the
+ * skills act on it, it publishes the contexts), the console tells the adaptations in order and the
+ * report shows them.
  */
 public class DemoCommandTest {
     private static final File ROOT = RepositoryRoot.path().toFile();
@@ -45,6 +46,47 @@ public class DemoCommandTest {
         assertTrue(told, told.contains("ADAPT   task -> dock (behaviour tree switches branch): rule noBattery (power_autonomy = 0."));
         assertTrue(told, told.contains("ADAPT   task -> pickDeliverCharge (behaviour tree switches branch): the preset: "
                 + "no rule or impact asks for another value"));
+        // The virtual clock against the real one: the simulator on the same world and seed takes the
+        // same decisions in the same order (the live run may stop a little earlier or later), compared
+        // per variation point. The live engine decides on each estimate as it arrives, so where the
+        // model's choice of speed is marginal (+0.02 either way once the person has gone) it may
+        // answer an in-between state the virtual clock, all of an instant's inputs at once, never
+        // shows: the speed is compared through the person's visit, the task through the whole run.
+        List<String> live = new ArrayList<>();
+        for (String line : Files.readAllLines(temp.getRoot().toPath().resolve("decisions.jsonl"))) {
+            live.addAll(changes(org.miron.runtime.Json.MAPPER.readTree(line)));
+        }
+        Path generated = temp.getRoot().toPath().resolve("model");
+        var roqme = org.miron.runtime.roqme.model.ModelReader.read(generated.resolve("intralogistics.roqme.json"));
+        Path tree = generated.resolve("intralogistics.ext.xml");
+        var setup = new org.miron.runtime.sim.Setup(org.miron.runtime.engine.IoModel.load(generated.resolve("intralogistics.io.json")),
+                roqme, tree, org.miron.runtime.sim.WorldReader.read(new File(ROOT, "examples/intralogistics/demo/world.json").toPath(),
+                        org.miron.runtime.sim.Setup.env(tree, roqme)));
+        List<String> virtual = new ArrayList<>();
+        new org.miron.runtime.sim.Simulation(setup, org.miron.runtime.sim.Policy.parse("adaptive"), 1, 150_000, 150_000).run()
+                .timeline().stream().filter(e -> e.topic().equals("miron.decision")).forEach(e -> virtual.addAll(changes(e.body())));
+        String both = "live " + live + " vs virtual " + virtual;
+        List<String> speeds = List.of("maxVelocity=100", "maxVelocity=10", "maxVelocity=100");
+        assertEquals(both, speeds, only("maxVelocity", virtual).subList(0, 3));
+        assertEquals(both, speeds, only("maxVelocity", live).subList(0, 3));
+        for (List<String> run : List.of(live, virtual)) { // slowed down for the person before the battery ran low
+            assertTrue(both, run.indexOf("maxVelocity=10") < run.indexOf("task=dock"));
+        }
+        List<String> liveTasks = only("task", live);
+        List<String> virtualTasks = only("task", virtual);
+        assertTrue(both, liveTasks.size() >= 3 && virtualTasks.size() >= liveTasks.size());
+        assertEquals(both, virtualTasks.subList(0, liveTasks.size()), liveTasks);
+    }
+
+    private static List<String> only(String varpoint, List<String> changes) {
+        return changes.stream().filter(c -> c.startsWith(varpoint + "=")).toList();
+    }
+
+    /** What a decision changed: varpoint=value, in the order the engine lists them. */
+    private static List<String> changes(com.fasterxml.jackson.databind.JsonNode decision) {
+        List<String> out = new ArrayList<>();
+        decision.path("changed").forEach(vp -> out.add(vp.asText() + "=" + decision.path("decisions").path(vp.asText()).asText()));
+        return out;
     }
 
     /**
@@ -77,12 +119,16 @@ public class DemoCommandTest {
         cli.setErr(new PrintWriter(err, true));
         Path dir = temp.getRoot().toPath();
 
-        List<String> arguments = new ArrayList<>(List.of("demo", "--out", dir.toString(), "--time-scale", "0.4"));
+        // 90 s of the world in 36 s: the whole story (person, low battery, dock, charge, back) with room for a loaded machine
+        List<String> arguments = new ArrayList<>(List.of("demo", "--out", dir.toString(), "--time-scale", "0.4", "--duration", "90s"));
         arguments.addAll(List.of(options));
         int status = cli.execute(arguments.toArray(String[]::new));
 
         String told = out.toString();
         assertEquals(err.toString() + told, 0, status);
+        assertTrue(told, told.contains("the skills act on examples/intralogistics/demo/world.json, which publishes the robot's "
+                + "contexts (closed loop) for 90s of world time"));
+        assertTrue(told, !told.contains("no demo/") && !told.contains("scenario"));
         // A person comes close: the provider's safety drops, the velocity parameter goes down, then back up.
         int safetyLow = told.indexOf("personNearby fired: undermines safety → safety");
         int slow = told.indexOf("ADAPT   maxVelocity -> 10 (change-parameter SmartCdServer transvel)");
@@ -93,8 +139,18 @@ public class DemoCommandTest {
         int dock = told.indexOf("ADAPT   task -> dock (behaviour tree switches branch)");
         int charged = told.indexOf("ADAPT   task -> pickDeliverCharge", dock);
         assertTrue(told, 0 <= batteryLow && batteryLow < dock && dock < charged);
-        assertTrue(told, told.indexOf("ROBOT   MoveTo x=-9.33 y=2.17", batteryLow) > 0);
-        assertTrue(told, told.contains("3 parameter changes applied by the skill interface"));
+        // Closed loop: the battery drained because the robot drove; it charges because the robot went to the dock.
+        // (the robot may start for the dock before the console has told the decision: both follow it at once)
+        int toDock = told.indexOf("ROBOT   MoveTo x=-9.33 y=2.17", batteryLow);
+        int docked = told.indexOf("RoQME   Docked = true", Math.max(toDock, dock));
+        int charging = told.indexOf("charging fired: reinforces power_autonomy", docked);
+        int full = told.indexOf("batteryHigh fired: reinforces power_autonomy", docked);
+        assertTrue(told, 0 < toDock && toDock < docked && docked < charged
+                && (docked < charging && charging < charged || docked < full && full < charged));
+        // ... and delivers: the drop's DeliveryDone event comes from the world
+        assertTrue(told, told.indexOf("RoQME   DeliveryDone = true", told.indexOf("ROBOT   objectdrop")) > 0);
+        java.util.regex.Matcher changes = java.util.regex.Pattern.compile("(\\d+) parameter changes applied by the skill interface").matcher(told);
+        assertTrue(told, changes.find() && Integer.parseInt(changes.group(1)) >= 3);
         assertTrue(told, !told.contains("scripts"));
 
         String report = Files.readString(dir.resolve("report.html"));
@@ -125,6 +181,19 @@ public class DemoCommandTest {
         assertTrue(err.toString(), err.toString().contains("--executor must be java or btcpp, not python"));
         assertEquals(2, cli.execute("demo", "--executor", "btcpp", "--bt-format", "3", "--out", temp.getRoot().getPath()));
         assertTrue(err.toString(), err.toString().contains("--executor btcpp runs BehaviorTree.CPP 4 trees"));
+    }
+
+    @Test
+    public void aWorldSaysHowLongItsSkillsTakeAndPublishesTheContexts() {
+        StringWriter err = new StringWriter();
+        CommandLine cli = MironCli.commandLine();
+        cli.setErr(new PrintWriter(err, true));
+        String world = new File(ROOT, "examples/intralogistics/demo/world.json").getPath();
+        assertEquals(2, cli.execute("demo", "--world", world, "--skills", new File(ROOT, "examples/intralogistics/demo/skills.json").getPath(),
+                "--out", temp.getRoot().getPath()));
+        assertEquals(2, cli.execute("demo", "--world", world, "--scenario", new File(ROOT, "examples/intralogistics/demo/scenario.json").getPath(),
+                "--out", temp.getRoot().getPath()));
+        assertTrue(err.toString(), err.toString().contains("--world excludes --scenario and --skills"));
     }
 
     @Test

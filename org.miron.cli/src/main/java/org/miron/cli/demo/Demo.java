@@ -22,13 +22,18 @@ import org.miron.runtime.roqme.LiveProvider;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.runtime.skill.TableSkills;
+import org.miron.runtime.sim.LiveWorld;
 
 /**
  * The whole MIRoN loop in one JVM: broker, RoQME QoS Metrics Provider, adaptation engine, mock
- * skill interface, BT executor and a scenario player publishing the robot's contexts. The robot runs
- * its mission over and over while the scenario plays; every perception, fired observation, metric
- * move, adaptation and skill is told on the console, and at the end a timeline report is written.
- * Without a provider the scenario's own estimate lines are the metrics.
+ * skill interface and BT executor. Closed-loop ({@link #world}): the mock's skills act on a
+ * simulated world, which publishes the robot's contexts, so what the robot does (its speed, where
+ * it goes, docking) changes what it perceives. Scripted: a scenario player publishes the contexts
+ * whatever the robot does, and the skills take a table's times. The robot runs its mission over and
+ * over meanwhile; every perception, fired observation, metric move, adaptation and skill is told on
+ * the console, and at the end a timeline report is written. Without a provider the scenario's own
+ * estimate lines are the metrics.
  */
 public final class Demo {
     /** What a run produced. */
@@ -51,6 +56,8 @@ public final class Demo {
     private ModelNames names = ModelNames.none();
     private Integer monitorPort;
     private Path btcppRunner;
+    private LiveWorld world;
+    private long worldMs;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
             PrintWriter out) {
@@ -61,6 +68,16 @@ public final class Demo {
         this.outDir = outDir;
         this.endpoints = endpoints;
         this.out = out;
+    }
+
+    /**
+     * Runs closed-loop on this world (its skills, processes and contexts) for {@code durationMs} of
+     * world time instead of playing the scenario; the world runs at the demo's time scale.
+     */
+    public Demo world(LiveWorld liveWorld, long durationMs) {
+        this.world = liveWorld;
+        this.worldMs = durationMs;
+        return this;
     }
 
     /** Plays the scenario faster (0.5) or slower (2.0); the skills keep their durations. */
@@ -113,7 +130,7 @@ public final class Demo {
         options.backend = backend;
         try (Broker broker = new Broker(endpoints).start();
                 SkillInterfaceMock skillInterface = new SkillInterfaceMock(endpoints.skill(), endpoints.skillEvents(),
-                        skills).start();
+                        world != null ? world : new TableSkills(skills)).start();
                 Engine engine = Engine.create(options);
                 LiveProvider provider = roqme == null ? null
                         : new LiveProvider(roqme, periodMs, 5000, endpoints.busIn(), endpoints.busOut()).timeScale(timeScale);
@@ -125,7 +142,7 @@ public final class Demo {
             Narrator narrator = new Narrator(out, engine.model());
             try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
                     .start();
-                    ScenarioPlayer player = new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
+                    ScenarioPlayer player = world != null ? null : new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
                 narrator.setClock(recorder);
                 int missionCount = btcppRunner != null
                         ? runOnBtcpp(engine, provider, narrator, recorder, player)
@@ -169,7 +186,7 @@ public final class Demo {
                 }
             }, "demo-robot");
             robot.start();
-            player.play(10_000);
+            play(player);
             Thread.sleep(settleMs);
             scenarioOver.set(true);
             executor.stop();
@@ -186,16 +203,27 @@ public final class Demo {
                     + " backend.");
             startProviderAndEngine(engine, provider);
             executor.start();
-            player.play(10_000);
+            play(player);
             Thread.sleep(settleMs);
             return executor.stop();
         }
     }
 
+    /** The scenario to its end, or the world for its duration (it started with the first skill pushed, if not before). */
+    private void play(ScenarioPlayer player) throws InterruptedException {
+        if (world == null) {
+            player.play(10_000);
+            return;
+        }
+        world.begin();
+        Thread.sleep(Math.round(worldMs * timeScale));
+    }
+
     private void startProviderAndEngine(Engine engine, LiveProvider provider) throws InterruptedException, EngineStartException {
         if (provider != null) {
             out.println("MIRoN demo: the RoQME provider computes " + String.join(", ", properties())
-                    + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of scenario time.");
+                    + " from the RoQME part of " + roqme.model().source() + " every " + periodMs + " ms of "
+                    + (world != null ? "world" : "scenario") + " time.");
             provider.start();
             if (!provider.awaitSubscribed(10_000)) {
                 throw new IllegalStateException("the RoQME provider did not connect to the bus within 10 s");

@@ -45,9 +45,11 @@ final class RoqmeNarration {
         String name = body.path("name").asText();
         switch (e.topic()) {
             case Topics.CONTEXT -> {
-                String value = body.path("value").toString();
-                if (!value.equals(lastContext.put(name, value))) {
-                    out.say(e.at(), "RoQME ", name + " = " + body.path("value").asText());
+                JsonNode v = body.path("value");
+                // a world's readings (49.3128...) told to one decimal, and only when that changes
+                String value = v.isFloatingPointNumber() ? String.format(java.util.Locale.ROOT, "%.1f", v.asDouble()) : v.asText();
+                if (!value.equals(lastContext.put(name, value)) || body.path("type").asText().equals("event")) {
+                    out.say(e.at(), "RoQME ", name + " = " + value);
                 }
             }
             case Topics.OBSERVATION -> observed(e.at(), name, body.path("actions"));

@@ -10,11 +10,9 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Objects;
 import org.miron.executor.NodeStatus;
 import org.miron.executor.Tree;
 import org.miron.executor.TreeContext;
-import org.miron.executor.scripting.ScriptValues;
 import org.miron.executor.skills.SkillActionStrategy;
 import org.miron.executor.skills.VariantSource;
 import org.miron.runtime.Json;
@@ -51,6 +49,7 @@ public final class Simulation {
     private final Policy policy;
     private final long durationMs;
     private final long timelineMs;
+    private final WorldDriver driver;
     private final World world;
     private final CompiledModel roqme;
     private final Provider provider;
@@ -65,8 +64,6 @@ public final class Simulation {
     private final Map<String, InputSpec> engineContexts = new HashMap<>();
     private final Map<String, InputSpec> engineMetrics = new HashMap<>();
     private final Map<String, RoqmeModel.Variable> contexts = new HashMap<>();
-    private final Object[] lastPublished;
-    private final long[] nextPublish;
     private final List<TimelineEvent> timeline = new ArrayList<>();
     private final double[] lastEstimates;
     private long now;
@@ -84,7 +81,8 @@ public final class Simulation {
         this.policy = policy;
         this.durationMs = durationMs;
         this.timelineMs = timelineMs;
-        this.world = new World(setup.world(), seed);
+        this.driver = new WorldDriver(setup.world(), seed, this::publish);
+        this.world = driver.world();
         this.roqme = compile(setup.roqme());
         this.provider = new Provider(roqme, 1000, 0);
         this.inputs = new InputState(setup.io());
@@ -110,8 +108,6 @@ public final class Simulation {
         lastEstimates = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
                 .mapToDouble(RoqmeModel.Belief::ref).toArray();
         measures = new Measures(setup.world().measures(), properties, lastEstimates);
-        lastPublished = new Object[setup.world().publications().size()];
-        nextPublish = new long[lastPublished.length];
         provider.onFire((o, t) -> {
             if (t <= timelineMs) {
                 timeline.add(new TimelineEvent(t, Topics.OBSERVATION, observation(o.decl())));
@@ -141,18 +137,14 @@ public final class Simulation {
     /** Runs the whole duration and returns what it measured. */
     public Result run() {
         provider.start();
-        world.start(0);
-        publishAll(true);
+        driver.start(0);
         if (decider == null) {
             policy.configuration(setup.io()).forEach((vp, index) -> apply(vp, vp.values().get(index)));
         }
         instant();
         int sameInstant = 0;
         while (true) {
-            long next = Math.min(world.nextEvent(), Math.min(provider.nextTickTime(), provider.nextDue()));
-            for (long p : nextPublish) {
-                next = Math.min(next, p);
-            }
+            long next = Math.min(driver.nextEvent(), Math.min(provider.nextTickTime(), provider.nextDue()));
             if (restartAt >= 0) {
                 next = Math.min(next, restartAt);
             }
@@ -175,13 +167,10 @@ public final class Simulation {
                 next = Math.min(durationMs, Math.max(next, awaitWallClock(next)));
             }
             measures.hold(world, (next - now) / 1000.0);
-            world.advance(next);
             now = next;
-            world.fire();
-            List<String> events = world.takeEvents();
-            events.forEach(this::publishEvent);
+            List<String> events = driver.step(next);
             measures.instant(world, events);
-            publishAll(false);
+            driver.publishDue();
             instant();
         }
         Map<String, Double> out = measures.finish(world, durationMs / 1000.0);
@@ -292,46 +281,6 @@ public final class Simulation {
                     : value.isBoolean() ? (Object) value.asBoolean() : value.asText());
             case "arch" -> world.setParameter(vp.binding().text("parameter"), value.isBoolean() ? (Object) value.asBoolean() : (Object) value.asDouble());
             default -> {
-            }
-        }
-    }
-
-    /** Periodic contexts that are due, and those published on change whose value changed ({@code all}: every one). */
-    private void publishAll(boolean all) {
-        List<Publication> pubs = setup.world().publications();
-        for (int i = 0; i < pubs.size(); i++) {
-            Publication p = pubs.get(i);
-            if (p.value() == null) {
-                nextPublish[i] = Long.MAX_VALUE; // an event: published when it occurs
-                continue;
-            }
-            boolean due = all || (p.everyMs() != null && nextPublish[i] <= now);
-            Object v = due || p.everyMs() == null ? value(p) : null;
-            if (due || (p.everyMs() == null && !Objects.equals(v, lastPublished[i]))) {
-                publish(p, v, !Objects.equals(v, lastPublished[i]));
-                lastPublished[i] = v;
-            }
-            if (p.everyMs() != null) {
-                nextPublish[i] = due ? now + p.everyMs() : nextPublish[i];
-            } else {
-                nextPublish[i] = Long.MAX_VALUE;
-            }
-        }
-    }
-
-    private Object value(Publication p) {
-        Object raw = world.eval(p.value());
-        return switch (p.type().kind()) {
-            case "boolean" -> ScriptValues.toBoolean(raw);
-            case "enum" -> String.valueOf(raw);
-            default -> ScriptValues.toDouble(raw);
-        };
-    }
-
-    private void publishEvent(String event) {
-        for (Publication p : setup.world().publications()) {
-            if (event.equals(p.event())) {
-                publish(p, Boolean.TRUE, true);
             }
         }
     }

@@ -5,7 +5,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -22,25 +21,22 @@ import org.zeromq.ZMQ;
 /**
  * Stand-in for SmartSoft's ComponentSkillInterface, wire-compatible with it: a REP socket for
  * queries (every request is answered with an empty frame, the ack) and a PUB for skill results.
- * Pushed skills run concurrently, each for its table duration; {@code abort-current-skill} ends
- * every running skill with ABORT. One thread owns both sockets.
+ * Pushed skills run concurrently, each for its table duration ({@link TableSkills}) or as a
+ * simulated world says (org.miron.runtime.sim.LiveWorld); {@code abort-current-skill} ends every
+ * running skill with ABORT. One thread owns both sockets and drives the skills' behaviour.
  */
 public final class SkillInterfaceMock implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(SkillInterfaceMock.class.getName());
     private static final int KEEP = 10_000; // history and results kept, oldest dropped first
 
-    private record Running(long id, String name, long dueMillis, SkillTable.Entry entry) {
-    }
-
     private final String repEndpoint;
     private final String pubEndpoint;
-    private final SkillTable table;
+    private final SkillBehaviour skills;
     private final ZContext ctx = Contexts.create();
     private final List<ParameterChange> history = new ArrayList<>();
     private final Map<String, JsonNode> committed = new LinkedHashMap<>();
     private final List<ObjectNode> results = new ArrayList<>();
     private final List<JsonNode> pushed = new ArrayList<>();
-    private final List<Running> running = new ArrayList<>(); // loop thread only
     private ZMQ.Socket rep;
     private ZMQ.Socket pub;
     private Thread thread;
@@ -48,9 +44,13 @@ public final class SkillInterfaceMock implements AutoCloseable {
     private volatile long malformed;
 
     public SkillInterfaceMock(String repEndpoint, String pubEndpoint, SkillTable table) {
+        this(repEndpoint, pubEndpoint, new TableSkills(table));
+    }
+
+    public SkillInterfaceMock(String repEndpoint, String pubEndpoint, SkillBehaviour skills) {
         this.repEndpoint = repEndpoint;
         this.pubEndpoint = pubEndpoint;
-        this.table = table;
+        this.skills = skills;
     }
 
     /** Binds on the calling thread so a busy port is reported to the caller. */
@@ -75,6 +75,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
 
     private void loop() {
         try (SocketWait poller = new SocketWait().add(rep)) {
+            skills.start(this::publishResult, System.currentTimeMillis());
             while (active) {
                 boolean ready = poller.await(nextTimeout());
                 boolean idle = true;
@@ -87,7 +88,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
                     handle(request);
                     rep.send(new byte[0]); // ack
                 }
-                finishDue(System.currentTimeMillis());
+                skills.advance(System.currentTimeMillis());
                 if (ready && idle) {
                     poller.idle(); // a wake-up with nothing to read: see SocketWait
                 }
@@ -101,11 +102,8 @@ public final class SkillInterfaceMock implements AutoCloseable {
 
     private long nextTimeout() {
         long now = System.currentTimeMillis();
-        long t = 50;
-        for (Running r : running) {
-            t = Math.min(t, Math.max(0, r.dueMillis() - now));
-        }
-        return Math.max(1, t);
+        long due = skills.nextDue(now);
+        return Math.max(1, Math.min(50, due - now));
     }
 
     private void handle(byte[] request) {
@@ -161,39 +159,25 @@ public final class SkillInterfaceMock implements AutoCloseable {
             committed.put(tag, change.values());
             notifyAll();
         }
+        skills.parameter(change, System.currentTimeMillis());
         LOG.info("skill interface mock: " + change.commands());
     }
 
     private void push(long id, JsonNode skill) {
-        String name = skill.path("name").asText();
         synchronized (this) {
             pushed.add(skill.deepCopy());
             notifyAll();
         }
-        SkillTable.Entry entry = table.lookup(name);
-        running.add(new Running(id, name, System.currentTimeMillis() + entry.durationMs(), entry));
+        skills.push(id, skill, System.currentTimeMillis());
     }
 
     private void abortAll() {
-        for (Running r : running) {
-            publishResult(r, "ABORT", Json.MAPPER.nullNode(), Json.object());
-        }
-        running.clear();
+        skills.abortAll(System.currentTimeMillis());
     }
 
-    private void finishDue(long now) {
-        for (Iterator<Running> it = running.iterator(); it.hasNext();) {
-            Running r = it.next();
-            if (r.dueMillis() <= now) {
-                it.remove();
-                publishResult(r, r.entry().result(), r.entry().resultValue(), r.entry().outputs());
-            }
-        }
-    }
-
-    private void publishResult(Running r, String result, JsonNode value, JsonNode outputs) {
+    private void publishResult(long id, String result, JsonNode value, JsonNode outputs) {
         ObjectNode msg = Json.object();
-        msg.put("id", r.id());
+        msg.put("id", id);
         msg.put("msg-type", "skill-result");
         ObjectNode res = msg.putObject("result");
         res.put("result", result);
@@ -261,6 +245,7 @@ public final class SkillInterfaceMock implements AutoCloseable {
                 Thread.currentThread().interrupt();
             }
         }
+        skills.close();
         ctx.close();
     }
 }
