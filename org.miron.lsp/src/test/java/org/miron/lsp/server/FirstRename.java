@@ -3,7 +3,6 @@ package org.miron.lsp.server;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Locale;
@@ -54,10 +53,10 @@ public final class FirstRename {
                 starts, idle);
         for (Map.Entry<String, List<double[]>> variant : runs.entrySet()) {
             System.out.println(variant.getKey());
-            print("  spawn -> first diagnostics", variant.getValue(), 3);
-            print("  first rename (tree Charge, from the .miron)", variant.getValue(), 0);
-            print("  second rename", variant.getValue(), 1);
-            print("  first references", variant.getValue(), 2);
+            Spread.print("  spawn -> first diagnostics", 46, variant.getValue(), 3);
+            Spread.print("  first rename (tree Charge, from the .miron)", 46, variant.getValue(), 0);
+            Spread.print("  second rename", 46, variant.getValue(), 1);
+            Spread.print("  first references", 46, variant.getValue(), 2);
         }
         System.exit(0);
     }
@@ -103,14 +102,5 @@ public final class FirstRename {
             process.destroyForcibly();
             Folders.delete(workspace);
         }
-    }
-
-    private static void print(String measure, List<double[]> runs, int index) {
-        List<Double> sorted = new ArrayList<>();
-        runs.forEach(run -> sorted.add(run[index]));
-        Collections.sort(sorted);
-        int n = sorted.size();
-        double median = n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
-        System.out.printf(Locale.ROOT, "%-46s %6.0f / %6.0f / %6.0f%n", measure, sorted.get(0), median, sorted.get(n - 1));
     }
 }

@@ -4,7 +4,6 @@ import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -57,10 +56,10 @@ public final class ServerStartup {
                     busy ? ", with a second process keeping one core busy" : "");
             for (Map.Entry<String, List<double[]>> variant : times.entrySet()) {
                 System.out.println(variant.getKey());
-                print("  spawn -> initialize answered", variant.getValue(), 0);
-                print("  spawn -> first .miron diagnostics", variant.getValue(), 1);
+                Spread.print("  spawn -> initialize answered", 44, variant.getValue(), 0);
+                Spread.print("  spawn -> first .miron diagnostics", 44, variant.getValue(), 1);
                 // CPU time depends less on what else the machine runs than wall time does.
-                print("  server CPU until then", variant.getValue(), 2);
+                Spread.print("  server CPU until then", 44, variant.getValue(), 2);
             }
         } finally {
             if (spinner != null) {
@@ -95,14 +94,5 @@ public final class ServerStartup {
             process.destroyForcibly();
             Folders.delete(workspace);
         }
-    }
-
-    private static void print(String measure, List<double[]> runs, int index) {
-        List<Double> sorted = new ArrayList<>();
-        runs.forEach(run -> sorted.add(run[index]));
-        Collections.sort(sorted);
-        int n = sorted.size();
-        double median = n % 2 == 1 ? sorted.get(n / 2) : (sorted.get(n / 2 - 1) + sorted.get(n / 2)) / 2;
-        System.out.printf(Locale.ROOT, "%-44s %6.0f / %6.0f / %6.0f%n", measure, sorted.get(0), median, sorted.get(n - 1));
     }
 }
