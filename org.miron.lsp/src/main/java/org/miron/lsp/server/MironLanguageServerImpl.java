@@ -2,6 +2,8 @@ package org.miron.lsp.server;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.function.Supplier;
 import java.util.concurrent.CompletableFuture;
 
 import org.eclipse.lsp4j.ClientCapabilities;
@@ -28,11 +30,18 @@ import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.lsp4j.jsonrpc.json.JsonRpcMethod;
 import org.eclipse.lsp4j.jsonrpc.services.ServiceEndpoints;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
+import org.eclipse.lsp4j.jsonrpc.services.JsonNotification;
+import org.eclipse.xtext.ide.server.BuildManager;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.UriExtensions;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.eclipse.xtext.util.CancelIndicator;
 
+import org.miron.lsp.diagram.DiagramGeneration;
+import org.miron.lsp.diagram.DiagramServers;
+import org.miron.lsp.diagram.MironDiagramServer;
+
+import com.google.gson.JsonObject;
 import com.google.inject.Inject;
 
 /**
@@ -45,6 +54,8 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
     private final WorkspaceFolderSet folders = new WorkspaceFolderSet();
     private final FileChangeSource fileChanges = new FileChangeSource(this::didChangeWatchedFiles);
+    private final DiagramServers diagrams = new DiagramServers(this::diagramOf,
+            uri -> this.uris.toUriString(org.eclipse.emf.common.util.URI.createURI(uri)));
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
@@ -102,6 +113,36 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     private void changeFolders(DidChangeWorkspaceFoldersParams change) {
         super.didChangeWorkspaceFolders(change);
         change.getEvent().getAdded().forEach(folder -> WorkspaceRoots.folder(folder.getUri()).ifPresent(fileChanges::watch));
+    }
+
+    // Diagrams (the sprotty-vscode protocol, org.miron.lsp.diagram): made again after every change,
+    // in a read queued after the change's build.
+
+    @JsonNotification("diagram/accept")
+    public void diagramAccept(JsonObject message) {
+        diagrams.accept(message);
+    }
+
+    @JsonNotification("diagram/didClose")
+    public void diagramDidClose(String clientId) {
+        diagrams.didClose(clientId);
+    }
+
+    public DiagramServers diagrams() {
+        return diagrams;
+    }
+
+    @Override
+    protected void runBuildable(Supplier<? extends BuildManager.Buildable> newBuildable) {
+        super.runBuildable(newBuildable);
+        diagrams.refreshAll();
+    }
+
+    private CompletableFuture<DiagramGeneration.Generated> diagramOf(MironDiagramServer server) {
+        org.eclipse.emf.common.util.URI uri = uris.toUri(server.sourceUri());
+        Set<String> expanded = server.expandedCalls();
+        return getRequestManager().runRead(cancel -> getWorkspaceManager().doRead(uri,
+                (document, resource) -> DiagramGeneration.of(resource, expanded)));
     }
 
     // A position outside the document (a client racing an edit, or a buggy one) gets an empty
