@@ -6,7 +6,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BiConsumer;
-import java.util.function.Function;
+import java.util.Set;
+import java.util.function.BiFunction;
 import java.util.function.UnaryOperator;
 
 import org.eclipse.sprotty.ActionMessage;
@@ -25,17 +26,18 @@ import com.google.gson.JsonObject;
  */
 public final class DiagramServers {
     private final Map<String, MironDiagramServer> servers = new ConcurrentHashMap<>();
-    private final Function<MironDiagramServer, CompletableFuture<DiagramGeneration.Generated>> generate;
+    private final BiFunction<String, Set<String>, CompletableFuture<DiagramGeneration.Generated>> generate;
     /** A resource's URI as the client writes it (file:///...). */
     private final UnaryOperator<String> clientUri;
     private volatile BiConsumer<String, Object> notifier = (method, params) -> {
     };
 
     /**
-     * @param generate reads the server's file and shows its model on it (after the writes queued
-     *        before it); the future ends when it is shown
+     * @param generate the diagram of a file (its URI) with the given SubTree calls expanded, read
+     *        after the writes queued before it
+     * @param clientUri a resource's URI as the client writes it
      */
-    public DiagramServers(Function<MironDiagramServer, CompletableFuture<DiagramGeneration.Generated>> generate,
+    public DiagramServers(BiFunction<String, Set<String>, CompletableFuture<DiagramGeneration.Generated>> generate,
             UnaryOperator<String> clientUri) {
         this.generate = generate;
         this.clientUri = clientUri;
@@ -79,7 +81,7 @@ public final class DiagramServers {
         }
         long request = server.nextRequest();
         String file = uri.substring(uri.lastIndexOf('/') + 1);
-        return generate.apply(server).handle((generated, failure) -> {
+        return generate.apply(uri, server.expandedCalls()).handle((generated, failure) -> {
             if (!server.isLatest(request) || failure instanceof CancellationException
                     || failure != null && failure.getCause() instanceof CancellationException) {
                 return null;

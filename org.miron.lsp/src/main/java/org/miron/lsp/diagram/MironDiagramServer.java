@@ -23,6 +23,8 @@ public class MironDiagramServer extends DefaultDiagramServer {
     private final Consumer<MironDiagramServer> refresh;
     private volatile Map<String, SourceSpan> spans = Map.of();
     private volatile boolean shown;
+    /** The model request to answer (a SetModelAction with its request id: sprotty-vscode awaits it). */
+    private volatile RequestModelAction request;
     private volatile ServerStatus lastStatus = ServerStatus.OK;
     private final AtomicLong requests = new AtomicLong();
 
@@ -51,6 +53,7 @@ public class MironDiagramServer extends DefaultDiagramServer {
     @Override
     protected void handle(RequestModelAction request) {
         copyOptions(request);
+        this.request = request;
         shown = false;
         spans = Map.of();
         refresh.accept(this);
@@ -73,8 +76,7 @@ public class MironDiagramServer extends DefaultDiagramServer {
                 SGraph empty = new SGraph();
                 empty.setType("graph");
                 empty.setId("graph");
-                setModel(empty);
-                shown = true;
+                first(empty);
             }
             return;
         }
@@ -84,7 +86,19 @@ public class MironDiagramServer extends DefaultDiagramServer {
         if (shown) {
             updateModel(root);
         } else {
-            shown = true;
+            first(root);
+        }
+    }
+
+    // Sprotty's server answers a model request it is given as the cause of an update with a
+    // SetModelAction carrying the request's id.
+    private void first(SModelRoot root) {
+        shown = true;
+        RequestModelAction answered = request;
+        request = null;
+        if (answered != null) {
+            updateModel(root, answered);
+        } else {
             setModel(root);
         }
     }

@@ -35,7 +35,7 @@ public final class MironLanguageServer {
         Launcher<LanguageClient> launcher = Launcher.createLauncher(server, LanguageClient.class, in, out);
         server.connect(StartupLog.watch(launcher.getRemoteProxy()));
         if (server instanceof MironLanguageServerImpl miron) {
-            miron.diagrams().connect(launcher.getRemoteEndpoint()::notify);
+            miron.connectDiagrams(launcher.getRemoteEndpoint()::notify);
         }
         StartupLog.mark("server listening");
         return launcher.startListening();

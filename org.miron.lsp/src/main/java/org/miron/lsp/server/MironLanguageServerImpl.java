@@ -2,7 +2,7 @@ package org.miron.lsp.server;
 
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
+import java.util.function.BiConsumer;
 import java.util.function.Supplier;
 import java.util.concurrent.CompletableFuture;
 
@@ -39,7 +39,6 @@ import org.eclipse.xtext.util.CancelIndicator;
 
 import org.miron.lsp.diagram.DiagramGeneration;
 import org.miron.lsp.diagram.DiagramServers;
-import org.miron.lsp.diagram.MironDiagramServer;
 
 import com.google.gson.JsonObject;
 import com.google.inject.Inject;
@@ -54,8 +53,13 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
     private final WorkspaceFolderSet folders = new WorkspaceFolderSet();
     private final FileChangeSource fileChanges = new FileChangeSource(this::didChangeWatchedFiles);
-    private final DiagramServers diagrams = new DiagramServers(this::diagramOf,
-            uri -> this.uris.toUriString(org.eclipse.emf.common.util.URI.createURI(uri)));
+    /**
+     * Made on the first diagram message: Sprotty is not there when the server runs inside Eclipse
+     * (its bundles are not in the feature), where no client sends any.
+     */
+    private DiagramServers diagrams;
+    private volatile BiConsumer<String, Object> notifier = (method, params) -> {
+    };
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
@@ -120,29 +124,39 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
 
     @JsonNotification("diagram/accept")
     public void diagramAccept(JsonObject message) {
-        diagrams.accept(message);
+        diagrams().accept(message);
     }
 
     @JsonNotification("diagram/didClose")
     public void diagramDidClose(String clientId) {
-        diagrams.didClose(clientId);
+        diagrams().didClose(clientId);
     }
 
-    public DiagramServers diagrams() {
+    /** Where the diagram servers send their notifications: the connection's JSON-RPC endpoint. */
+    public void connectDiagrams(BiConsumer<String, Object> notifications) {
+        this.notifier = notifications;
+    }
+
+    public synchronized DiagramServers diagrams() {
+        if (diagrams == null) {
+            diagrams = new DiagramServers((uri, expanded) -> getRequestManager().runRead(cancel -> getWorkspaceManager()
+                    .doRead(uris.toUri(uri), (document, resource) -> DiagramGeneration.of(resource, expanded))),
+                    uri -> uris.toUriString(org.eclipse.emf.common.util.URI.createURI(uri)));
+            diagrams.connect(notifier);
+        }
         return diagrams;
     }
 
     @Override
     protected void runBuildable(Supplier<? extends BuildManager.Buildable> newBuildable) {
         super.runBuildable(newBuildable);
-        diagrams.refreshAll();
-    }
-
-    private CompletableFuture<DiagramGeneration.Generated> diagramOf(MironDiagramServer server) {
-        org.eclipse.emf.common.util.URI uri = uris.toUri(server.sourceUri());
-        Set<String> expanded = server.expandedCalls();
-        return getRequestManager().runRead(cancel -> getWorkspaceManager().doRead(uri,
-                (document, resource) -> DiagramGeneration.of(resource, expanded)));
+        DiagramServers open;
+        synchronized (this) {
+            open = diagrams;
+        }
+        if (open != null) {
+            open.refreshAll();
+        }
     }
 
     // A position outside the document (a client racing an edit, or a buggy one) gets an empty

@@ -180,6 +180,7 @@ public class DiagramServerLspTest {
         client.send(clientId, requestModelAction(uri));
         Received set = client.await(mark, r -> "setModel".equals(r.kind())
                 && r.params().get("clientId").getAsString().equals(clientId), "setModel");
+        assertEquals("the answer to the request", "client_1", set.action().get("responseId").getAsString());
         return set.action().getAsJsonObject("newRoot");
     }
 
