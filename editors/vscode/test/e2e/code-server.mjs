@@ -981,12 +981,16 @@ async function diagramChecks(page, u) {
         }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
         await page.keyboard.press('Control+Z');
         await until('the name back in the SVG', async () => (await titles(frame)).includes('pick_retry'));
+        await page.keyboard.press('Control+Home'); // as the later checks expect the file
     });
     await check('the diagram follows the active editor: a .miron shows its variation points', async () => {
         await u.open('intralogistics.miron');
         const frame = await diagramFrame();
         await until('a variation point in the SVG', async () => (await frame.locator('svg.sprotty-graph g.node-varpoint').count()) > 0);
         await page.screenshot({ path: join(out, 'diagram-miron.png') });
+        // The panel closed: the later checks expect one editor group.
+        await page.locator('.editor-group-container').nth(1).locator('.tab .tab-actions .action-label').first().click({ force: true });
+        await until('one editor group', async () => (await page.locator('.editor-group-container').count()) === 1);
     });
 }
 
