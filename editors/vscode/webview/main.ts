@@ -47,7 +47,7 @@ class TreeNodeView implements IView {
             : svg('rect', { 'class-shape': true, width: w, height: h, rx: kind === 'condition' ? Math.min(h / 2, 18) : kind === 'control' ? 1 : kind === 'subtree' ? 3 : 6 });
         const parts = [shape];
         if (node.expanded !== undefined && node.expanded !== null) {
-            parts.push(svg('g', { 'class-miron-expand': true, transform: `translate(${w - 18},2)` },
+            parts.push(svg('g', { 'class-miron-expand': true, transform: `translate(${w - 10},-8)` },
                 svg('rect', { 'class-miron-expand': true, width: 16, height: 16, rx: 3 }),
                 svg('text', { 'class-miron-expand': true, x: 8, y: 12, 'text-anchor': 'middle' }, node.expanded ? '−' : '+')));
         }

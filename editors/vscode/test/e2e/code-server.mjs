@@ -959,8 +959,11 @@ async function diagramChecks(page, u) {
         return undefined;
     });
     const titles = (frame) => frame.locator('svg.sprotty-graph text.label-title').allTextContents();
+    /** Back to the text editor (the first group) from the webview. */
+    const editorTab = () => page.locator('.editor-group-container').first().locator('.tab', { hasText: 'intralogistics.bt' }).first().click();
     await check('MIRoN: Show Diagram draws the tree beside the editor, and a keystroke renaming a node updates it', async () => {
         await u.open('intralogistics.bt');
+        await u.expectLanguage('Behavior Tree (BehaviorTree.CPP XML)'); // the command is offered in BT editors
         await u.runCommand('MIRoN: Show Diagram');
         const frame = await diagramFrame();
         // One drawn node per element of the file's trees, with their names.
@@ -982,6 +985,32 @@ async function diagramChecks(page, u) {
         await page.keyboard.press('Control+Z');
         await until('the name back in the SVG', async () => (await titles(frame)).includes('pick_retry'));
         await page.keyboard.press('Control+Home'); // as the later checks expect the file
+    });
+    await check('a click on a diagram node selects its source; + on a SubTree call draws the called tree below it', async () => {
+        const frame = await diagramFrame();
+        const text = readFileSync(join(workspace, 'intralogistics.bt'), 'utf8');
+        const line = text.split('\n').findIndex((l) => l.includes('name="pick_step"'));
+        const node = frame.locator('svg.sprotty-graph g.miron-node', { has: frame.locator('text.label-title', { hasText: /^pick_step$/ }) }).first();
+        await node.locator('text.label-title').click();
+        // The webview has the focus (and the status bar no cursor): back to the text editor's tab.
+        await until(`the cursor on line ${line + 1}, the pick_step call`, async () => {
+            await editorTab();
+            return (await u.cursor()).line === line;
+        })
+            .catch(async (e) => { throw new Error(`${e.message}; the status bar says ${JSON.stringify(await u.cursor())}`); });
+        const before = (await titles(frame)).length;
+        await node.locator('g.miron-expand').click();
+        // Pick's four nodes and GoTo's two, which it calls, below the call (they keep their frames too).
+        await until('the called tree below the call', async () => {
+            const shown = await titles(frame);
+            return shown.length === before + 6 && shown.filter((t) => t === 'pick_retry').length === 2;
+        }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
+        await page.screenshot({ path: join(out, 'diagram-expanded.png') });
+        await node.locator('g.miron-expand').click();
+        await until('the call folded again', async () => (await titles(frame)).length === before);
+        await editorTab();
+        await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+        await page.keyboard.press('Control+Home'); // the reveal moved the cursor: back to the top, as later checks expect
     });
     await check('the diagram follows the active editor: a .miron shows its variation points', async () => {
         await u.open('intralogistics.miron');
