@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the VS Code extension without Gradle: npm ci, npm test (JUnit XML in
+# Builds the VS Code extension without Gradle: npm ci, npm test (which compiles the extension and
+# bundles the diagram webview with esbuild into pack/webview.js; JUnit XML in
 # editors/build/test-results/test/) and vsce package into editors/vscode/build/miron-vscode.vsix.
 # Needs Node.js 20+ with npm, and the npm registry (or a populated npm cache) for npm ci.
 set -euo pipefail

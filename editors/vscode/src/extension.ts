@@ -1,6 +1,7 @@
 // MIRoN for VS Code: starts the MIRoN language server (`miron lsp`, over stdio) for behaviour
 // trees, RoQME and MIRoN files, switches BehaviorTree.CPP `.xml` files to the BT language by their
-// content, and offers "MIRoN: Generate" and "MIRoN: Convert to BehaviorTree.CPP 3/4".
+// content, and offers "MIRoN: Generate", "MIRoN: Convert to BehaviorTree.CPP 3/4" and "MIRoN: Show
+// Diagram" (src/diagram.ts).
 import * as fs from 'fs';
 import * as path from 'path';
 import * as vscode from 'vscode';
@@ -18,6 +19,7 @@ import {
 } from 'vscode-languageclient/node';
 import { CommandContext, convert, errorText, generate, generateInTerminal } from './commands';
 import { isBehaviorTreeXml, mayBeBehaviorTree } from './detect';
+import { DiagramPanels } from './diagram';
 import { serverLaunch, ServerLaunch } from './launch';
 import { ServerMessages } from './messages';
 import { StatusItem } from './status';
@@ -86,10 +88,16 @@ export async function activate(context: vscode.ExtensionContext): Promise<void> 
     status = new StatusItem();
     watcher = vscode.workspace.createFileSystemWatcher(WATCHED_FILES);
     context.subscriptions.push(output, status, watcher);
+    const diagrams = new DiagramPanels(context.extensionUri, async () => {
+        await ensureStarted();
+        return client && client.state === State.Running ? client : undefined;
+    });
+    context.subscriptions.push(diagrams);
 
     context.subscriptions.push(
         vscode.commands.registerCommand('miron.restartServer', () => restart()),
         vscode.commands.registerCommand('miron.showOutput', () => output.show(true)),
+        vscode.commands.registerCommand('miron.showDiagram', (uri?: unknown) => diagrams.show(uri)),
         vscode.commands.registerCommand('miron.convertTo3', (uri?: unknown) => convert(commandContext, '3', uri)),
         vscode.commands.registerCommand('miron.convertTo4', (uri?: unknown) => convert(commandContext, '4', uri)),
         vscode.workspace.onDidChangeConfiguration(async (e) => {

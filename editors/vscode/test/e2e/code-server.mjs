@@ -23,6 +23,7 @@
 //                   own behaviour with the stand-in, the server's features with the real one.
 //   MIRON_SERVER_ARGS  JSON array for miron.server.args
 //   MIRON_E2E_TIMEOUT  the longest wait for one condition, in ms (default 120000)
+//   MIRON_E2E_ONLY  a regular expression: only the checks whose names match run (while developing one)
 // Writes screenshots, the code-server log and the extension's output to build/e2e/<mode>/.
 // Prints "N passed, N failed" and JUnit XML (MIRON_JUNIT_XML, default
 // ../build/test-results/test/TEST-vscode-e2e-<mode>.xml, where run-tests counts it).
@@ -56,9 +57,11 @@ const serverCommand = real ? process.env.MIRON_SERVER : process.execPath;
 const serverArgs = real ? JSON.parse(process.env.MIRON_SERVER_ARGS || '[]') : [fakeServer];
 
 const results = [];
+const only = process.env.MIRON_E2E_ONLY ? new RegExp(process.env.MIRON_E2E_ONLY) : undefined;
 /** Thrown by a check whose precondition does not hold: reported as skipped, with the reason. */
 class Skip extends Error {}
 async function check(name, fn) {
+    if (only && !only.test(name)) return;
     const started = Date.now();
     try {
         await fn();
@@ -909,6 +912,7 @@ async function realChecks(page) {
     await semanticCheck(page, u);
     await btSemanticCheck(page, u);
     await issue23Checks(page, u);
+    await diagramChecks(page, u);
     await check('MIRoN: Generate on a model with errors: one error message, nothing written', async () => {
         await u.open('intralogistics.miron');
         await u.clearToasts();
@@ -950,3 +954,78 @@ async function realChecks(page) {
         if (errors.length) throw new Error(`errors in the output: ${errors.join(' | ')}`);
     });
 }
+
+/** The diagram webview (issue 25): Sprotty's SVG, drawn from the server's model, follows the text. */
+async function diagramChecks(page, u) {
+    /** The frame of the diagram webview (code-server nests it in two iframes), once it has drawn. */
+    const diagramFrame = () => until('the diagram webview draws', async () => {
+        for (const f of page.frames()) {
+            if (await f.locator('svg.sprotty-graph g.miron-node').count().catch(() => 0)) return f;
+        }
+        return undefined;
+    });
+    const titles = (frame) => frame.locator('svg.sprotty-graph text.label-title').allTextContents();
+    /** Back to the text editor (the first group) from the webview. */
+    const editorTab = () => page.locator('.editor-group-container').first().locator('.tab', { hasText: 'intralogistics.bt' }).first().click();
+    await check('MIRoN: Show Diagram draws the tree beside the editor, and a keystroke renaming a node updates it', async () => {
+        await u.open('intralogistics.bt');
+        await u.expectLanguage('Behavior Tree (BehaviorTree.CPP XML)'); // the command is offered in BT editors
+        await u.runCommand('MIRoN: Show Diagram');
+        const frame = await diagramFrame();
+        // One drawn node per element of the file's trees, with their names.
+        const text = readFileSync(join(workspace, 'intralogistics.bt'), 'utf8');
+        const trees = [...text.matchAll(/<BehaviorTree ID="[^"]*">([\s\S]*?)<\/BehaviorTree>/g)].map((m) => m[1]);
+        const elements = trees.reduce((n, body) => n + (body.match(/<[A-Za-z]/g) ?? []).length, 0);
+        const names = ['PickDeliverChargeSubtree', 'pick_retry', 'deliveries', 'pick_deliver'];
+        await until(`the tree's ${elements} nodes in the SVG`, async () => {
+            const shown = await titles(frame);
+            return shown.length === elements && names.every((n) => shown.includes(n));
+        }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
+        await page.screenshot({ path: join(out, 'diagram.png') });
+        await u.cursorOn('pick_retry', 4);
+        await page.keyboard.type('X');
+        await until('the renamed node in the SVG', async () => {
+            const shown = await titles(frame);
+            return shown.includes('pickX_retry') && !shown.includes('pick_retry');
+        }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
+        await page.keyboard.press('Control+Z');
+        await until('the name back in the SVG', async () => (await titles(frame)).includes('pick_retry'));
+        await page.keyboard.press('Control+Home'); // as the later checks expect the file
+    });
+    await check('a click on a diagram node selects its source; + on a SubTree call draws the called tree below it', async () => {
+        const frame = await diagramFrame();
+        const text = readFileSync(join(workspace, 'intralogistics.bt'), 'utf8');
+        const line = text.split('\n').findIndex((l) => l.includes('name="pick_step"'));
+        const node = frame.locator('svg.sprotty-graph g.miron-node', { has: frame.locator('text.label-title', { hasText: /^pick_step$/ }) }).first();
+        await node.locator('text.label-title').click();
+        // The webview has the focus (and the status bar no cursor): back to the text editor's tab.
+        await until(`the cursor on line ${line + 1}, the pick_step call`, async () => {
+            await editorTab();
+            return (await u.cursor()).line === line;
+        })
+            .catch(async (e) => { throw new Error(`${e.message}; the status bar says ${JSON.stringify(await u.cursor())}`); });
+        const before = (await titles(frame)).length;
+        await node.locator('g.miron-expand').click();
+        // Pick's four nodes and GoTo's two, which it calls, below the call (they keep their frames too).
+        await until('the called tree below the call', async () => {
+            const shown = await titles(frame);
+            return shown.length === before + 6 && shown.filter((t) => t === 'pick_retry').length === 2;
+        }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
+        await page.screenshot({ path: join(out, 'diagram-expanded.png') });
+        await node.locator('g.miron-expand').click();
+        await until('the call folded again', async () => (await titles(frame)).length === before);
+        await editorTab();
+        await page.locator('.editor-instance .monaco-editor textarea').first().focus();
+        await page.keyboard.press('Control+Home'); // the reveal moved the cursor: back to the top, as later checks expect
+    });
+    await check('the diagram follows the active editor: a .miron shows its variation points', async () => {
+        await u.open('intralogistics.miron');
+        const frame = await diagramFrame();
+        await until('a variation point in the SVG', async () => (await frame.locator('svg.sprotty-graph g.node-varpoint').count()) > 0);
+        await page.screenshot({ path: join(out, 'diagram-miron.png') });
+        // The panel closed: the later checks expect one editor group.
+        await page.locator('.editor-group-container').nth(1).locator('.tab .tab-actions .action-label').first().click({ force: true });
+        await until('one editor group', async () => (await page.locator('.editor-group-container').count()) === 1);
+    });
+}
+

@@ -4,11 +4,10 @@ import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 import org.eclipse.emf.ecore.EObject;
 import org.eclipse.emf.ecore.resource.Resource;
-import org.eclipse.xtext.nodemodel.ICompositeNode;
-import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.miron.bt.bt.Attribute;
 import org.miron.bt.bt.BTModel;
 import org.miron.bt.bt.BehaviorTree;
@@ -36,6 +35,8 @@ public final class BtShapes {
     private final boolean woven;
     /** Model elements to their shapes, for the MIRoN overlay (definitions view only). */
     private final Map<EObject, Shape> index = new java.util.HashMap<>();
+    /** The ids of the SubTree calls drawn expanded (definitions view only). */
+    private Set<String> expandedCalls = Set.of();
 
     private BtShapes(Resource resource) {
         this.declared = NodeDeclarations.visibleFrom(resource);
@@ -46,12 +47,25 @@ public final class BtShapes {
 
     /** Every tree of the file, calls linked to the trees they call (those of included files too). */
     public static Diagram of(Resource resource) {
-        return definitions(resource).diagram;
+        return of(resource, Set.of());
+    }
+
+    /**
+     * {@link #of}, with the called tree drawn below each SubTree call whose node id is in
+     * {@code expanded} (an editor's expand/collapse); the called tree keeps its own frame.
+     */
+    public static Diagram of(Resource resource, Set<String> expanded) {
+        return definitions(resource, expanded).diagram;
     }
 
     /** {@link #of} with each tree node's shape, for the layers drawn over it. */
     static Indexed definitions(Resource resource) {
+        return definitions(resource, Set.of());
+    }
+
+    private static Indexed definitions(Resource resource, Set<String> expanded) {
         BtShapes shapes = new BtShapes(resource);
+        shapes.expandedCalls = expanded;
         Diagram diagram = new Diagram(resource.getURI().lastSegment());
         for (BehaviorTree tree : BtTrees.treesOf(resource)) {
             String name = BtTrees.runName(tree);
@@ -119,6 +133,15 @@ public final class BtShapes {
             String target = frameId(BtTrees.runName(called));
             shape.link(target);
             diagram.links().add(new Diagram.Link(frame.id(), target, "edge:call"));
+            boolean open = expandedCalls.contains(id) && !called.getNodes().isEmpty();
+            shape.expanded(open);
+            if (open) {
+                Deque<String> stack = new ArrayDeque<>();
+                stack.push(frame.title());
+                stack.push(BtTrees.runName(called));
+                shape.children().add(inline(called.getNodes().get(0), id + ".0", stack));
+                return shape;
+            }
         }
         List<TreeNode> children = BtTrees.children(node);
         for (int i = 0; i < children.size(); i++) {
@@ -162,7 +185,7 @@ public final class BtShapes {
         String name = BtAttributes.value(node.getAttributes(), "name");
         String title = name != null && !name.isBlank() ? name : typeName;
         String type = title.equals(typeName) ? kind.word() : typeName;
-        Shape shape = new Shape(id, kind, title, type).source(where(node));
+        Shape shape = new Shape(id, kind, title, type).span(SourceSpan.of(node));
         for (Attribute attribute : node.getAttributes()) {
             if (!"name".equals(attribute.getName()) && !("ID".equals(attribute.getName()) && kinds.idIsType(node))) {
                 shape.ports().add(new Shape.Port(attribute.getName(), shorten(attribute.getValue()), null));
@@ -177,15 +200,5 @@ public final class BtShapes {
     static String shorten(String value) {
         String text = value == null ? "" : value.replaceAll("\\s+", " ");
         return text.length() <= MAX_VALUE ? text : text.substring(0, MAX_VALUE - 1) + "…";
-    }
-
-    /** {@code file:line:col} of a model element (clicking a node reveals it), or null. */
-    static String where(EObject element) {
-        ICompositeNode node = NodeModelUtils.findActualNodeFor(element);
-        if (node == null || element.eResource() == null) {
-            return null;
-        }
-        var position = NodeModelUtils.getLineAndColumn(node, node.getOffset());
-        return element.eResource().getURI().lastSegment() + ":" + position.getLine() + ":" + position.getColumn();
     }
 }

@@ -115,6 +115,7 @@ public final class DiagramLayout {
         TreeSNode node = (TreeSNode) node(shape.id(), shape.kind().type(), css);
         node.setTrace(shape.source());
         node.setLink(shape.link());
+        node.setExpanded(shape.expanded());
         double y = Metrics.PAD_Y;
         node.getChildren().add(label(shape.id() + "#title", "label:title", shape.title(), Metrics.PAD_X, y));
         y += Metrics.LINE;

@@ -1,5 +1,7 @@
 package org.miron.diagram;
 
+import java.util.Set;
+
 import org.eclipse.emf.ecore.resource.Resource;
 import org.eclipse.sprotty.SGraph;
 import org.miron.dsl.miron.MironModel;
@@ -14,8 +16,13 @@ public final class Diagrams {
      * keeps that tree's frame only. Null when the tree is not in the diagram.
      */
     public static Diagram of(Resource resource, String treeId) {
+        return of(resource, treeId, Set.of());
+    }
+
+    /** {@link #of(Resource, String)} with the SubTree calls whose node ids are given expanded (BT files). */
+    public static Diagram of(Resource resource, String treeId, Set<String> expandedCalls) {
         boolean miron = !resource.getContents().isEmpty() && resource.getContents().get(0) instanceof MironModel;
-        Diagram diagram = miron ? MironShapes.of(resource) : BtShapes.of(resource);
+        Diagram diagram = miron ? MironShapes.of(resource) : BtShapes.of(resource, expandedCalls);
         if (treeId == null) {
             return diagram;
         }

@@ -94,7 +94,7 @@ public final class MironShapes {
                 node.cssClasses().add("varpoint-target");
                 node.notes().add("◆ " + vp.getName() + " (" + insertion + ")");
                 Shape point = new Shape(node.id() + "/" + vp.getName(), ShapeKind.VARPOINT, "◆ " + vp.getName(),
-                        insertion + " " + node.title()).edgeType("edge:varpoint").source(BtShapes.where(vp));
+                        insertion + " " + node.title()).edgeType("edge:varpoint").span(SourceSpan.of(vp));
                 for (EnumLiteral literal : literals(vp)) {
                     point.children().add(variant(point, literal, diagram, frameOf(diagram, node)));
                 }
@@ -113,10 +113,10 @@ public final class MironShapes {
                 diagram.links().add(new Diagram.Link(fromFrame, frame, "edge:variant"));
             }
             return new Shape(point.id() + "/" + name, ShapeKind.VARIANT, name, "→ " + tree).link(frame)
-                    .edgeType("edge:variant").source(BtShapes.where(literal));
+                    .edgeType("edge:variant").span(SourceSpan.of(literal));
         }
         return new Shape(point.id() + "/" + name, ShapeKind.VARIANT, name, "preset: the nominal tree")
-                .edgeType("edge:variant").source(BtShapes.where(literal));
+                .edgeType("edge:variant").span(SourceSpan.of(literal));
     }
 
     private static List<EnumLiteral> literals(VariationPoint vp) {
@@ -151,7 +151,7 @@ public final class MironShapes {
         String where = vp.getBinding() instanceof ArchBinding arch
                 ? "arch " + arch.getComponent() + "." + arch.getParameter() : "not bound";
         Shape shape = new Shape("parameters/" + vp.getName(), ShapeKind.VARPOINT, "◆ " + vp.getName(), where)
-                .source(BtShapes.where(vp));
+                .span(SourceSpan.of(vp));
         for (EnumLiteral literal : literals(vp)) {
             shape.notes().add(literal.getName());
         }

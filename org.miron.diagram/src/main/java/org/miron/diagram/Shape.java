@@ -26,8 +26,10 @@ public final class Shape {
     private String edgeType = "edge:child";
     /** The frame (tree) this node calls or puts in place, or null. */
     private String link;
-    /** Where the node is written: {@code file:line:col}, or null. */
-    private String source;
+    /** Where the node is written, or null. */
+    private SourceSpan span;
+    /** A SubTree call: whether the called tree is drawn below it; null for other nodes. */
+    private Boolean expanded;
 
     public Shape(String id, ShapeKind kind, String title, String type) {
         this.id = id;
@@ -89,12 +91,26 @@ public final class Shape {
         return this;
     }
 
+    /** Where the node is written: {@code file:line:col}, or null. */
     public String source() {
-        return source;
+        return span == null ? null : span.where();
     }
 
-    public Shape source(String where) {
-        this.source = where;
+    public SourceSpan span() {
+        return span;
+    }
+
+    public Shape span(SourceSpan where) {
+        this.span = where;
+        return this;
+    }
+
+    public Boolean expanded() {
+        return expanded;
+    }
+
+    public Shape expanded(Boolean drawnBelow) {
+        this.expanded = drawnBelow;
         return this;
     }
 

@@ -8,6 +8,8 @@ import org.eclipse.sprotty.SNode;
  */
 public class TreeSNode extends SNode {
     private String link;
+    /** A SubTree call: whether its tree is drawn below it (Sprotty's expandable feature); else null. */
+    private Boolean expanded;
 
     /** The id of the frame this node links to, or null. */
     public String getLink() {
@@ -16,5 +18,13 @@ public class TreeSNode extends SNode {
 
     public void setLink(String link) {
         this.link = link;
+    }
+
+    public Boolean getExpanded() {
+        return expanded;
+    }
+
+    public void setExpanded(Boolean expanded) {
+        this.expanded = expanded;
     }
 }

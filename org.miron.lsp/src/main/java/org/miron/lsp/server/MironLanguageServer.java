@@ -34,6 +34,9 @@ public final class MironLanguageServer {
                 .getInstance(LanguageServerImpl.class);
         Launcher<LanguageClient> launcher = Launcher.createLauncher(server, LanguageClient.class, in, out);
         server.connect(StartupLog.watch(launcher.getRemoteProxy()));
+        if (server instanceof MironLanguageServerImpl miron) {
+            miron.connectDiagrams(launcher.getRemoteEndpoint()::notify);
+        }
         StartupLog.mark("server listening");
         return launcher.startListening();
     }

@@ -2,6 +2,8 @@ package org.miron.lsp.server;
 
 import java.util.List;
 import java.util.Map;
+import java.util.function.BiConsumer;
+import java.util.function.Supplier;
 import java.util.concurrent.CompletableFuture;
 
 import org.eclipse.lsp4j.ClientCapabilities;
@@ -28,11 +30,17 @@ import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.lsp4j.jsonrpc.json.JsonRpcMethod;
 import org.eclipse.lsp4j.jsonrpc.services.ServiceEndpoints;
 import org.eclipse.lsp4j.jsonrpc.messages.Either;
+import org.eclipse.lsp4j.jsonrpc.services.JsonNotification;
+import org.eclipse.xtext.ide.server.BuildManager;
 import org.eclipse.xtext.ide.server.LanguageServerImpl;
 import org.eclipse.xtext.ide.server.UriExtensions;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
 import org.eclipse.xtext.util.CancelIndicator;
 
+import org.miron.lsp.diagram.DiagramGeneration;
+import org.miron.lsp.diagram.DiagramServers;
+
+import com.google.gson.JsonObject;
 import com.google.inject.Inject;
 
 /**
@@ -45,6 +53,13 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     private static final List<String> TRIGGER_CHARACTERS = List.of(".", ":", "<", "\"");
     private final WorkspaceFolderSet folders = new WorkspaceFolderSet();
     private final FileChangeSource fileChanges = new FileChangeSource(this::didChangeWatchedFiles);
+    /**
+     * Made on the first diagram message: Sprotty is not there when the server runs inside Eclipse
+     * (its bundles are not in the feature), where no client sends any.
+     */
+    private DiagramServers diagrams;
+    private volatile BiConsumer<String, Object> notifier = (method, params) -> {
+    };
 
     @Override
     public CompletableFuture<InitializeResult> initialize(InitializeParams params) {
@@ -110,6 +125,46 @@ public class MironLanguageServerImpl extends LanguageServerImpl {
     private void changeFolders(DidChangeWorkspaceFoldersParams change) {
         super.didChangeWorkspaceFolders(change);
         change.getEvent().getAdded().forEach(folder -> WorkspaceRoots.folder(folder.getUri()).ifPresent(fileChanges::watch));
+    }
+
+    // Diagrams (the sprotty-vscode protocol, org.miron.lsp.diagram): made again after every change,
+    // in a read queued after the change's build.
+
+    @JsonNotification("diagram/accept")
+    public void diagramAccept(JsonObject message) {
+        diagrams().accept(message);
+    }
+
+    @JsonNotification("diagram/didClose")
+    public void diagramDidClose(String clientId) {
+        diagrams().didClose(clientId);
+    }
+
+    /** Where the diagram servers send their notifications: the connection's JSON-RPC endpoint. */
+    public void connectDiagrams(BiConsumer<String, Object> notifications) {
+        this.notifier = notifications;
+    }
+
+    public synchronized DiagramServers diagrams() {
+        if (diagrams == null) {
+            diagrams = new DiagramServers((uri, expanded) -> getRequestManager().runRead(cancel -> getWorkspaceManager()
+                    .doRead(uris.toUri(uri), (document, resource) -> DiagramGeneration.of(resource, expanded))),
+                    uri -> uris.toUriString(org.eclipse.emf.common.util.URI.createURI(uri)));
+            diagrams.connect(notifier);
+        }
+        return diagrams;
+    }
+
+    @Override
+    protected void runBuildable(Supplier<? extends BuildManager.Buildable> newBuildable) {
+        super.runBuildable(newBuildable);
+        DiagramServers open;
+        synchronized (this) {
+            open = diagrams;
+        }
+        if (open != null) {
+            open.refreshAll();
+        }
     }
 
     // A position outside the document (a client racing an edit, or a buggy one) gets an empty

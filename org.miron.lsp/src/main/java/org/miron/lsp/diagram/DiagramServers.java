@@ -1,0 +1,144 @@
+package org.miron.lsp.diagram;
+
+import java.util.Map;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.BiConsumer;
+import java.util.Set;
+import java.util.function.BiFunction;
+import java.util.function.UnaryOperator;
+
+import org.eclipse.sprotty.ActionMessage;
+import org.eclipse.sprotty.OpenAction;
+import org.eclipse.sprotty.SelectAction;
+import org.miron.diagram.SourceSpan;
+
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+
+/**
+ * The diagram clients of one language-server connection, by client id: what arrives on
+ * {@code diagram/accept} goes to the client's server (made on its first message), what the servers
+ * send goes out on {@code diagram/accept}, and opening or selecting a node reveals its source
+ * ({@code diagram/openInTextEditor}, which sprotty-vscode handles).
+ */
+public final class DiagramServers {
+    private final Map<String, MironDiagramServer> servers = new ConcurrentHashMap<>();
+    private final BiFunction<String, Set<String>, CompletableFuture<DiagramGeneration.Generated>> generate;
+    /** A resource's URI as the client writes it (file:///...). */
+    private final UnaryOperator<String> clientUri;
+    private volatile BiConsumer<String, Object> notifier = (method, params) -> {
+    };
+
+    /**
+     * @param generate the diagram of a file (its URI) with the given SubTree calls expanded, read
+     *        after the writes queued before it
+     * @param clientUri a resource's URI as the client writes it
+     */
+    public DiagramServers(BiFunction<String, Set<String>, CompletableFuture<DiagramGeneration.Generated>> generate,
+            UnaryOperator<String> clientUri) {
+        this.generate = generate;
+        this.clientUri = clientUri;
+    }
+
+    /** Where notifications to the client go (the JSON-RPC endpoint of the connection). */
+    public void connect(BiConsumer<String, Object> notifier) {
+        this.notifier = notifier;
+    }
+
+    public void accept(JsonElement json) {
+        ActionMessage message = DiagramJson.read(json);
+        if (message == null || message.getClientId() == null) {
+            return;
+        }
+        servers.computeIfAbsent(message.getClientId(), this::create).accept(message);
+    }
+
+    public void didClose(String clientId) {
+        if (clientId != null) {
+            servers.remove(clientId);
+        }
+    }
+
+    /** Every open diagram made again, after an edit (a file a diagram includes may have changed too). */
+    public void refreshAll() {
+        servers.values().forEach(this::refresh);
+    }
+
+    /** Waits for every diagram's latest model (tests and benchmarks). */
+    public CompletableFuture<Void> refreshAllAndWait() {
+        return CompletableFuture.allOf(servers.values().stream().map(this::refresh).toArray(CompletableFuture[]::new));
+    }
+
+    // Models are read in parallel and an edit cancels the reads before it: only the model of the
+    // latest request is shown, whichever read ends first.
+    private CompletableFuture<?> refresh(MironDiagramServer server) {
+        String uri = server.sourceUri();
+        if (uri == null) {
+            return CompletableFuture.completedFuture(null);
+        }
+        long request = server.nextRequest();
+        String file = uri.substring(uri.lastIndexOf('/') + 1);
+        return generate.apply(uri, server.expandedCalls()).handle((generated, failure) -> {
+            if (!server.isLatest(request) || failure instanceof CancellationException
+                    || failure != null && failure.getCause() instanceof CancellationException) {
+                return null;
+            }
+            if (failure != null) {
+                server.fail(file + ": no diagram (" + reason(failure) + ")");
+            } else {
+                server.show(generated, file);
+            }
+            return null;
+        });
+    }
+
+    private static String reason(Throwable failure) {
+        Throwable cause = failure instanceof CompletionException && failure.getCause() != null ? failure.getCause() : failure;
+        return cause.getMessage() != null ? cause.getMessage() : cause.getClass().getSimpleName();
+    }
+
+    private MironDiagramServer create(String clientId) {
+        MironDiagramServer server = new MironDiagramServer(clientId, this::refresh);
+        server.setRemoteEndpoint(message -> notifier.accept("diagram/accept", DiagramJson.write(message)));
+        server.setOpenListener((action, from) -> reveal(server, ((OpenAction) action).getElementId(), true));
+        server.setSelectionListener((action, from) -> {
+            if (action instanceof SelectAction select && select.getSelectedElementsIDs() != null
+                    && select.getSelectedElementsIDs().size() == 1) {
+                reveal(server, select.getSelectedElementsIDs().get(0), false);
+            }
+        });
+        server.setExpansionListener((action, from) -> refresh(server));
+        return server;
+    }
+
+    private void reveal(MironDiagramServer server, String elementId, boolean forceOpen) {
+        SourceSpan span = elementId == null ? null : server.span(elementId);
+        if (span != null) {
+            notifier.accept("diagram/openInTextEditor", openInTextEditor(span, clientUri.apply(span.uri()), forceOpen));
+        }
+    }
+
+    /** sprotty-vscode's OpenInTextEditorMessage: {location: {uri, range}, forceOpen}. */
+    static JsonObject openInTextEditor(SourceSpan span, String uri, boolean forceOpen) {
+        JsonObject range = new JsonObject();
+        range.add("start", position(span.startLine(), span.startCharacter()));
+        range.add("end", position(span.endLine(), span.endCharacter()));
+        JsonObject location = new JsonObject();
+        location.addProperty("uri", uri);
+        location.add("range", range);
+        JsonObject message = new JsonObject();
+        message.add("location", location);
+        message.addProperty("forceOpen", forceOpen);
+        return message;
+    }
+
+    private static JsonObject position(int line, int character) {
+        JsonObject position = new JsonObject();
+        position.addProperty("line", line);
+        position.addProperty("character", character);
+        return position;
+    }
+}

@@ -1,0 +1,126 @@
+package org.miron.lsp.diagram;
+
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+
+import org.eclipse.sprotty.Action;
+import org.eclipse.sprotty.DefaultDiagramServer;
+import org.eclipse.sprotty.RequestModelAction;
+import org.eclipse.sprotty.SGraph;
+import org.eclipse.sprotty.SModelRoot;
+import org.eclipse.sprotty.ServerStatus;
+import org.miron.diagram.SourceSpan;
+
+/**
+ * The server of one diagram client (one webview): Sprotty's default server, which keeps the
+ * model, its revision, the selection and the expanded SubTree calls, with the model laid out
+ * here (ELK, by org.miron.diagram) rather than by the client.
+ */
+public class MironDiagramServer extends DefaultDiagramServer {
+    private final Consumer<MironDiagramServer> refresh;
+    private volatile Map<String, SourceSpan> spans = Map.of();
+    private volatile boolean shown;
+    /** The model request to answer (a SetModelAction with its request id: sprotty-vscode awaits it). */
+    private volatile RequestModelAction request;
+    private volatile ServerStatus lastStatus = ServerStatus.OK;
+    private final AtomicLong requests = new AtomicLong();
+
+    /** @param refresh asks for this server's model again (the file, or its expanded calls, changed) */
+    MironDiagramServer(String clientId, Consumer<MironDiagramServer> refresh) {
+        super(clientId);
+        this.refresh = refresh;
+    }
+
+    /** The document the client shows (the {@code sourceUri} of its model request), or null. */
+    public String sourceUri() {
+        return getOptions() == null ? null : getOptions().get("sourceUri");
+    }
+
+    public Set<String> expandedCalls() {
+        return Set.copyOf(getDiagramState().getExpandedElements());
+    }
+
+    /** Where a node is written, or null. */
+    public SourceSpan span(String elementId) {
+        return spans.get(elementId);
+    }
+
+    // A model request (a new webview, or the panel now following another editor) is answered
+    // once the file is read: the source may have changed, so the model is made again.
+    @Override
+    protected void handle(RequestModelAction request) {
+        copyOptions(request);
+        this.request = request;
+        shown = false;
+        spans = Map.of();
+        refresh.accept(this);
+    }
+
+    long nextRequest() {
+        return requests.incrementAndGet();
+    }
+
+    boolean isLatest(long request) {
+        return requests.get() == request;
+    }
+
+    /** Shows a new model: the first as a SetModelAction, the next ones as updates. */
+    void show(DiagramGeneration.Generated generated, String file) {
+        if (!generated.parsed()) {
+            status(new ServerStatus(ServerStatus.Severity.ERROR,
+                    file + " does not parse: the diagram shows the last version that did"));
+            if (!shown) {
+                SGraph empty = new SGraph();
+                empty.setType("graph");
+                empty.setId("graph");
+                first(empty);
+            }
+            return;
+        }
+        spans = generated.spans();
+        status(ServerStatus.OK);
+        SModelRoot root = generated.root();
+        if (shown) {
+            updateModel(root);
+        } else {
+            first(root);
+        }
+    }
+
+    // Sprotty's server answers a model request it is given as the cause of an update with a
+    // SetModelAction carrying the request's id.
+    private void first(SModelRoot root) {
+        shown = true;
+        RequestModelAction answered = request;
+        request = null;
+        if (answered != null) {
+            updateModel(root, answered);
+        } else {
+            setModel(root);
+        }
+    }
+
+    void fail(String message) {
+        status(new ServerStatus(ServerStatus.Severity.ERROR, message));
+    }
+
+    private void status(ServerStatus status) {
+        if (!Objects.equals(status, lastStatus)) {
+            lastStatus = status;
+            setStatus(status);
+        }
+    }
+
+    @Override
+    protected boolean needsClientLayout(SModelRoot root) {
+        return false;
+    }
+
+    @Override
+    protected boolean needsServerLayout(SModelRoot root, Action cause) {
+        return false;
+    }
+}
