@@ -1013,8 +1013,8 @@ async function diagramChecks(page, u) {
             const shown = await titles(frame);
             return shown.length === elements && names.every((n) => shown.includes(n));
         }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
-        await page.screenshot({ path: join(out, 'diagram.png') });
         await fitted(frame, 'the tree');
+        await page.screenshot({ path: join(out, 'diagram.png') });
         const calls = await arrowed(frame, 'call');
         if (calls.edges === 0 || calls.bad > 0) throw new Error(`SubTree call edges without an arrowhead at their end: ${JSON.stringify(calls)}`);
         // The user zooms in; an update as they type keeps that zoom (only a new file is fitted again).
@@ -1041,6 +1041,8 @@ async function diagramChecks(page, u) {
         if (typed !== zoomed) throw new Error(`the update moved the user's view: ${zoomed} became ${typed}`);
         await page.keyboard.press('Control+Z');
         await until('the name back in the SVG', async () => (await titles(frame)).includes('pick_retry'));
+        const undone = (await viewport(frame)).transform;
+        if (undone !== zoomed) throw new Error(`the undo's update moved the user's view: ${zoomed} became ${undone}`);
         await page.keyboard.press('Control+Home'); // as the later checks expect the file
     });
     await check('a click on a diagram node selects its source; + on a SubTree call draws the called tree below it', async () => {
