@@ -9,7 +9,7 @@ import {
     openFeature, PolylineEdgeView, RenderingContext, SEdgeImpl, SGraphImpl, SGraphView, SLabelImpl,
     SModelElementImpl, SNodeImpl, setClass, svg, TYPES,
 } from 'sprotty';
-import { Action, CollapseExpandAction } from 'sprotty-protocol';
+import { Action, CollapseExpandAction, Point } from 'sprotty-protocol';
 import { SprottyDiagramIdentifier, SprottyStarter } from 'sprotty-vscode-webview';
 import { DIAGRAM_STYLE } from './style';
 
@@ -64,15 +64,41 @@ class LabelView implements IView {
     }
 }
 
-/** An edge with its kind as a class (edge-call, edge-variant... are dashed). */
+/** The edges drawn with an arrowhead at their target, as the SVG writer's marker: SubTree call → called tree, varpoint → variant. */
+const ARROWED = ['call', 'variant'];
+
+/** An edge with its kind as a class (edge-call, edge-variant... are dashed); calls and variants end in an arrowhead. */
 class TypedEdgeView extends PolylineEdgeView {
     override render(edge: Readonly<SEdgeImpl>, context: RenderingContext, args?: IViewArgs): VNode | undefined {
         const vnode = super.render(edge, context, args);
         if (vnode) {
-            setClass(vnode, 'edge-' + edge.type.substring(edge.type.indexOf(':') + 1), true);
+            setClass(vnode, 'edge-' + edgeKind(edge), true);
         }
         return vnode;
     }
+
+    // The SVG writer's marker (a 10 by 10 triangle, 8 stroke widths long) as a path: its tip on the
+    // route's end, turned along the last segment that has a length.
+    protected override renderAdditionals(edge: SEdgeImpl, segments: Point[], context: RenderingContext): VNode[] {
+        const additionals = super.renderAdditionals(edge, segments, context);
+        if (!ARROWED.includes(edgeKind(edge)) || segments.length < 2) {
+            return additionals;
+        }
+        const tip = segments[segments.length - 1];
+        let from = segments.length - 2;
+        while (from > 0 && Math.hypot(tip.x - segments[from].x, tip.y - segments[from].y) < 0.5) {
+            from--;
+        }
+        const angle = Math.atan2(tip.y - segments[from].y, tip.x - segments[from].x) * 180 / Math.PI;
+        return [...additionals, svg('path', {
+            'class-miron-arrow': true, d: 'M 0,0 L -10.4,-5.2 L -10.4,5.2 Z',
+            transform: `translate(${tip.x},${tip.y}) rotate(${angle})`,
+        }) as unknown as VNode];
+    }
+}
+
+function edgeKind(edge: Readonly<SEdgeImpl>): string {
+    return edge.type.substring(edge.type.indexOf(':') + 1);
 }
 
 /** A click on a call's +/− asks the server to draw its tree below it, or not. */

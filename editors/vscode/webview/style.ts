@@ -42,6 +42,9 @@ rect.miron-expand { fill:var(--vscode-button-background); }
 text.miron-expand { fill:var(--vscode-button-foreground); font-size:13px; font-weight:bold; }
 .sprotty-edge { fill:none; stroke:var(--edge); stroke-width:1.3; }
 .sprotty-edge.edge-call, .sprotty-edge.edge-variant { stroke-dasharray:5 4; }
+.sprotty-edge.edge-varpoint, .sprotty-edge.edge-variant { stroke:var(--varpoint-line); }
+.sprotty-edge > .miron-arrow { fill:var(--edge); stroke:none; stroke-dasharray:none; }
+.sprotty-edge.edge-variant > .miron-arrow { fill:var(--varpoint-line); }
 .sprotty-status { position:absolute; left:8px; bottom:6px; display:flex; gap:6px;
   font-family:var(--vscode-font-family); font-size:12px; }
 .sprotty-status-message.error, .sprotty-status-message.fatal { color:var(--vscode-errorForeground); }

@@ -965,6 +965,38 @@ async function diagramChecks(page, u) {
         return undefined;
     });
     const titles = (frame) => frame.locator('svg.sprotty-graph text.label-title').allTextContents();
+    /** The webview's SVG and its graph (the group Sprotty scales and scrolls): their boxes on screen and its transform. */
+    const viewport = (frame) => frame.evaluate(() => {
+        const svg = document.querySelector('svg.sprotty-graph');
+        const graph = svg?.querySelector(':scope > g');
+        const box = (e) => { const r = e.getBoundingClientRect(); return { left: r.left, top: r.top, right: r.right, bottom: r.bottom }; };
+        return svg && graph ? { view: box(svg), graph: box(graph), transform: graph.getAttribute('transform') } : undefined;
+    });
+    /** The whole diagram fitted to the webview on opening: its graph inside the SVG's box, filling it one way (or at zoom 1). */
+    const fitted = (frame, what) => until(`${what} fitted to the webview`, async () => {
+        const v = await viewport(frame);
+        const inside = v && v.graph.left >= v.view.left - 1 && v.graph.top >= v.view.top - 1
+            && v.graph.right <= v.view.right + 1 && v.graph.bottom <= v.view.bottom + 1;
+        const fills = v && (v.graph.right - v.graph.left > 0.8 * (v.view.right - v.view.left)
+            || v.graph.bottom - v.graph.top > 0.8 * (v.view.bottom - v.view.top));
+        // Sprotty fits at most at zoom 1 (maxZoom): a small diagram need not fill the view.
+        const full = /scale\(1\)/.test(v?.transform ?? '');
+        return inside && (fills || full) && v;
+    }).catch(async (e) => { throw new Error(`${e.message}; ${JSON.stringify(await viewport(frame))}`); });
+    /** Every edge of a kind ends in an arrowhead whose tip is the end of its line; how many there are. */
+    const arrowed = (frame, kind) => frame.evaluate((kind) => {
+        const edges = [...document.querySelectorAll(`svg.sprotty-graph g.sprotty-edge.edge-${kind}`)];
+        const bad = edges.filter((edge) => {
+            const line = edge.querySelector('path:not(.miron-arrow)');
+            const arrow = edge.querySelector('path.miron-arrow');
+            if (!line || !arrow) return true;
+            const end = line.getPointAtLength(line.getTotalLength());
+            const tip = arrow.getCTM().inverse().multiply(line.getCTM());
+            const p = new DOMPoint(end.x, end.y).matrixTransform(tip);
+            return Math.hypot(p.x, p.y) > 1;
+        });
+        return { edges: edges.length, bad: bad.length };
+    }, kind);
     /** Back to the text editor (the first group) from the webview. */
     const editorTab = () => page.locator('.editor-group-container').first().locator('.tab', { hasText: 'intralogistics.bt' }).first().click();
     await check('MIRoN: Show Diagram draws the tree beside the editor, and a keystroke renaming a node updates it', async () => {
@@ -981,15 +1013,36 @@ async function diagramChecks(page, u) {
             const shown = await titles(frame);
             return shown.length === elements && names.every((n) => shown.includes(n));
         }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
+        await fitted(frame, 'the tree');
         await page.screenshot({ path: join(out, 'diagram.png') });
+        const calls = await arrowed(frame, 'call');
+        if (calls.edges === 0 || calls.bad > 0) throw new Error(`SubTree call edges without an arrowhead at their end: ${JSON.stringify(calls)}`);
+        // The user zooms in; an update as they type keeps that zoom (only a new file is fitted again).
+        const svgBox = await frame.locator('svg.sprotty-graph').boundingBox();
+        const opened = (await viewport(frame)).transform;
+        await page.mouse.move(svgBox.x + svgBox.width / 2, svgBox.y + svgBox.height / 2);
+        await until('the diagram zoomed by the mouse wheel', async () => {
+            await page.mouse.wheel(0, -100);
+            return (await viewport(frame)).transform !== opened;
+        });
+        const zoomed = await until('the zoom settled', async () => {
+            const before = (await viewport(frame)).transform;
+            await new Promise((r) => setTimeout(r, 300));
+            const after = (await viewport(frame)).transform;
+            return before === after && after;
+        });
         await u.cursorOn('pick_retry', 4);
         await page.keyboard.type('X');
         await until('the renamed node in the SVG', async () => {
             const shown = await titles(frame);
             return shown.includes('pickX_retry') && !shown.includes('pick_retry');
         }).catch(async (e) => { throw new Error(`${e.message}; it shows ${await titles(frame)}`); });
+        const typed = (await viewport(frame)).transform;
+        if (typed !== zoomed) throw new Error(`the update moved the user's view: ${zoomed} became ${typed}`);
         await page.keyboard.press('Control+Z');
         await until('the name back in the SVG', async () => (await titles(frame)).includes('pick_retry'));
+        const undone = (await viewport(frame)).transform;
+        if (undone !== zoomed) throw new Error(`the undo's update moved the user's view: ${zoomed} became ${undone}`);
         await page.keyboard.press('Control+Home'); // as the later checks expect the file
     });
     await check('a click on a diagram node selects its source; + on a SubTree call draws the called tree below it', async () => {
@@ -1022,6 +1075,9 @@ async function diagramChecks(page, u) {
         await u.open('intralogistics.miron');
         const frame = await diagramFrame();
         await until('a variation point in the SVG', async () => (await frame.locator('svg.sprotty-graph g.node-varpoint').count()) > 0);
+        await fitted(frame, 'the .miron model, the file the panel follows now,');
+        const variants = await arrowed(frame, 'variant');
+        if (variants.edges === 0 || variants.bad > 0) throw new Error(`variant edges without an arrowhead at their end: ${JSON.stringify(variants)}`);
         await page.screenshot({ path: join(out, 'diagram-miron.png') });
         // The panel closed: the later checks expect one editor group.
         await page.locator('.editor-group-container').nth(1).locator('.tab .tab-actions .action-label').first().click({ force: true });

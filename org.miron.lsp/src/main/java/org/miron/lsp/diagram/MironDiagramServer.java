@@ -1,5 +1,6 @@
 package org.miron.lsp.diagram;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
@@ -8,8 +9,11 @@ import java.util.function.Consumer;
 
 import org.eclipse.sprotty.Action;
 import org.eclipse.sprotty.DefaultDiagramServer;
+import org.eclipse.sprotty.FitToScreenAction;
 import org.eclipse.sprotty.RequestModelAction;
+import org.eclipse.sprotty.SEdge;
 import org.eclipse.sprotty.SGraph;
+import org.eclipse.sprotty.SModelElement;
 import org.eclipse.sprotty.SModelRoot;
 import org.eclipse.sprotty.ServerStatus;
 import org.miron.diagram.SourceSpan;
@@ -23,10 +27,14 @@ public class MironDiagramServer extends DefaultDiagramServer {
     private final Consumer<MironDiagramServer> refresh;
     private volatile Map<String, SourceSpan> spans = Map.of();
     private volatile boolean shown;
+    /** Whether the client has fitted a drawn model of this request's file to its view. */
+    private volatile boolean fitted;
     /** The model request to answer (a SetModelAction with its request id: sprotty-vscode awaits it). */
     private volatile RequestModelAction request;
     private volatile ServerStatus lastStatus = ServerStatus.OK;
     private final AtomicLong requests = new AtomicLong();
+    /** Space around the fitted diagram, in screen pixels. */
+    private static final double FIT_PADDING = 20;
 
     /** @param refresh asks for this server's model again (the file, or its expanded calls, changed) */
     MironDiagramServer(String clientId, Consumer<MironDiagramServer> refresh) {
@@ -55,6 +63,7 @@ public class MironDiagramServer extends DefaultDiagramServer {
         copyOptions(request);
         this.request = request;
         shown = false;
+        fitted = false;
         spans = Map.of();
         refresh.accept(this);
     }
@@ -88,6 +97,25 @@ public class MironDiagramServer extends DefaultDiagramServer {
         } else {
             first(root);
         }
+        if (!fitted) {
+            fitted = true;
+            dispatch(fitToScreen(root));
+        }
+    }
+
+    // The first drawn model of a file (a new webview, the panel following another editor, or the
+    // first version that parses) fits the view; updates as the user types keep their zoom and
+    // scroll. Sprotty's client holds actions after a SetModel until it knows its canvas size. The
+    // fit names the tree frames: with no ids, Sprotty fits the selection if there is one.
+    static FitToScreenAction fitToScreen(SModelRoot root) {
+        FitToScreenAction fit = new FitToScreenAction();
+        List<String> frames = root.getChildren() == null ? List.of()
+                : root.getChildren().stream().filter(c -> !(c instanceof SEdge)).map(SModelElement::getId).toList();
+        fit.setElementIds(frames);
+        fit.setPadding(FIT_PADDING);
+        fit.setMaxZoom(1.0);
+        fit.setAnimate(false);
+        return fit;
     }
 
     // Sprotty's server answers a model request it is given as the cause of an update with a

@@ -86,6 +86,46 @@ public class DiagramServerLspTest {
     }
 
     @Test
+    public void theFirstModelOfAFileIsFittedToTheViewAndAnUpdateIsNot() throws Exception {
+        int mark = client.mark();
+        JsonObject graph = requestModel("fit");
+        Received fit = client.await(mark, r -> "fit".equals(r.params().get("clientId").getAsString())
+                && "fit".equals(r.kind()), "fit");
+        Received set = client.await(mark, r -> "setModel".equals(r.kind()), "setModel");
+        assertTrue("the fit after the model", client.indexOf(fit) > client.indexOf(set));
+        assertFitsEveryFrame(fit, graph);
+
+        // A keystroke: an update, which keeps the user's zoom and scroll.
+        int edit = client.mark();
+        client.change(uri, text.replace("name=\"handover\"", "name=\"handOverParcel\""));
+        Received update = client.await(edit, r -> "updateModel".equals(r.kind()), "updateModel");
+        // The panel follows another file: its first model is fitted again.
+        Path miron = workspace.resolve("hospital.miron");
+        String mironUri = client.open(miron, Files.readString(miron), "miron");
+        int follow = client.mark();
+        client.send("fit", requestModelAction(mironUri));
+        Received mironSet = client.await(follow, r -> "setModel".equals(r.kind()), "setModel of the .miron");
+        Received mironFit = client.await(follow, r -> "fit".equals(r.kind()), "fit of the .miron");
+        assertTrue(client.indexOf(mironFit) > client.indexOf(mironSet));
+        assertFitsEveryFrame(mironFit, mironSet.action().getAsJsonObject("newRoot"));
+        for (Received after : client.between(client.indexOf(update), client.indexOf(mironSet))) {
+            assertFalse("no fit after an update: " + after, "fit".equals(after.kind()));
+        }
+    }
+
+    /** A fit, not animated, of every tree frame of the graph (not of a selection). */
+    private static void assertFitsEveryFrame(Received fit, JsonObject graph) {
+        List<String> frames = children(graph).stream().filter(c -> "tree".equals(type(c)))
+                .map(c -> c.get("id").getAsString()).toList();
+        assertFalse(frames.isEmpty());
+        List<String> ids = new ArrayList<>();
+        fit.action().getAsJsonArray("elementIds").forEach(id -> ids.add(id.getAsString()));
+        assertEquals(frames, ids);
+        assertFalse(fit.action().get("animate").getAsBoolean());
+        assertEquals(1.0, fit.action().get("maxZoom").getAsDouble(), 0);
+    }
+
+    @Test
     public void brokenTextKeepsTheLastDiagramAndSaysSo() throws Exception {
         requestModel("broken");
         int mark = client.mark();
