@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.miron.dds.config.BridgeConfig.ContextMapping;
 import org.miron.dds.config.BridgeConfig.ContextType;
 import org.miron.dds.config.FieldPath;
+import org.miron.runtime.bus.ContextMessage;
 
 /**
  * DDS samples to {@code roqme.context} bodies ({@code {"name","namespace","type","value","time"}},
@@ -91,13 +92,6 @@ final class ContextConversion {
     }
 
     static ObjectNode body(String name, String namespace, ContextType type, JsonNode value, long time) {
-        ObjectNode b = F.objectNode().put("name", name);
-        if (!namespace.isEmpty()) {
-            b.put("namespace", namespace);
-        }
-        b.put("type", type.json());
-        b.set("value", value);
-        b.put("time", time);
-        return b;
+        return ContextMessage.body(name, namespace, type.json(), value, time);
     }
 }

@@ -1,6 +1,5 @@
 package org.miron.runtime.roqme;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -16,6 +15,7 @@ import java.util.function.LongSupplier;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.ContextMessage;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.roqme.expr.CompiledModel.CompiledBelief;
@@ -271,14 +271,9 @@ public final class LiveProvider implements AutoCloseable {
                 continue;
             }
             publishedDerived.put(v.id(), value);
-            ObjectNode o = Json.object();
-            o.put("name", v.name());
-            o.put("namespace", v.namespace());
-            o.put("type", v.type().kind());
-            o.set("value", Json.MAPPER.valueToTree(value));
-            o.put("time", now);
+            ObjectNode o = ContextMessage.body(v.name(), v.namespace(), v.type().kind(), Json.MAPPER.valueToTree(value), now);
             o.put("derived", true);
-            bus.publishRetained("context\0" + v.namespace() + "\0" + v.name(), Topics.CONTEXT, Json.write(o));
+            bus.publishRetained(ContextMessage.retainKey(v.namespace(), v.name()), Topics.CONTEXT, Json.write(o));
         }
     }
 
@@ -288,20 +283,7 @@ public final class LiveProvider implements AutoCloseable {
         o.put("name", obs.decl().name());
         o.put("namespace", obs.decl().namespace());
         o.put("time", time);
-        ArrayNode actions = o.putArray("actions");
-        for (RoqmeModel.Action a : obs.decl().actions()) {
-            ObjectNode x = actions.addObject();
-            x.put("kind", a.kind());
-            switch (a.kind()) {
-                case "reinforces", "undermines" -> {
-                    x.put("belief", a.belief());
-                    x.put("strength", a.strength() == null ? "MEDIUM" : a.strength());
-                }
-                case "clears" -> x.put("belief", a.belief());
-                case "sets" -> x.put("var", a.var());
-                default -> x.put("timer", a.timer());
-            }
-        }
+        ObservationMessage.putActions(o, obs.decl());
         bus.publish(Topics.OBSERVATION, Json.write(o));
     }
 

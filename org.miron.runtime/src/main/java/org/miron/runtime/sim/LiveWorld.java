@@ -10,6 +10,7 @@ import org.miron.executor.skills.SkillHandle;
 import org.miron.executor.skills.SkillRequest;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.ContextMessage;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.skill.ParameterChange;
 import org.miron.runtime.skill.SkillBehaviour;
@@ -202,17 +203,13 @@ public final class LiveWorld implements SkillBehaviour {
     }
 
     private void publish(Publication p, Object value, boolean changed) {
-        ObjectNode body = Json.object();
-        body.put("name", p.context());
-        body.put("namespace", namespaces.getOrDefault(p.context(), ""));
-        body.put("type", p.event() != null ? "event" : p.type().kind());
-        body.set("value", Json.MAPPER.valueToTree(value));
-        body.put("time", System.currentTimeMillis());
+        String namespace = namespaces.getOrDefault(p.context(), "");
+        ObjectNode body = ContextMessage.body(p.context(), namespace, p.event() != null ? "event" : p.type().kind(),
+                Json.MAPPER.valueToTree(value), System.currentTimeMillis());
         if (p.event() != null) {
             bus.publish(Topics.CONTEXT, Json.write(body)); // an event happens once: not replayed to late subscribers
         } else {
-            bus.publishRetained(Topics.CONTEXT + "\0" + body.path("namespace").asText() + "\0" + p.context(),
-                    Topics.CONTEXT, Json.write(body));
+            bus.publishRetained(ContextMessage.retainKey(namespace, p.context()), Topics.CONTEXT, Json.write(body));
         }
     }
 

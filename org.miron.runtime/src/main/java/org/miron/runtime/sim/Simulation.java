@@ -23,6 +23,7 @@ import org.miron.runtime.engine.InputSpec;
 import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.NativeBackend;
 import org.miron.runtime.engine.VariationPoint;
+import org.miron.runtime.roqme.ObservationMessage;
 import org.miron.runtime.roqme.Provider;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.roqme.expr.Compiler;
@@ -339,20 +340,7 @@ public final class Simulation {
     private static ObjectNode observation(RoqmeModel.Observation decl) {
         ObjectNode o = Json.object();
         o.put("name", decl.name());
-        var actions = o.putArray("actions");
-        for (RoqmeModel.Action a : decl.actions()) {
-            ObjectNode x = actions.addObject();
-            x.put("kind", a.kind());
-            switch (a.kind()) {
-                case "reinforces", "undermines" -> {
-                    x.put("belief", a.belief());
-                    x.put("strength", a.strength() == null ? "MEDIUM" : a.strength());
-                }
-                case "clears" -> x.put("belief", a.belief());
-                case "sets" -> x.put("var", a.var());
-                default -> x.put("timer", a.timer());
-            }
-        }
+        ObservationMessage.putActions(o, decl);
         return o;
     }
 }
