@@ -1,8 +1,6 @@
 package org.miron.cli.demo;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -33,18 +31,13 @@ public final class SimulationReport {
     }
 
     public Path write(Path file) throws IOException {
-        Files.createDirectories(file.toAbsolutePath().getParent());
-        Files.writeString(file, html(), StandardCharsets.UTF_8);
-        return file;
+        return TimelineReport.writePage(file, html());
     }
 
     String html() {
         StringBuilder out = new StringBuilder();
-        out.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>MIRoN simulation: ")
-                .append(TimelineReport.escape(title)).append("</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}"
-                        + "h2{margin-top:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;"
-                        + "text-align:left;font-size:13px}svg text{font-size:12px}.bars{display:flex;flex-wrap:wrap;gap:1em}"
-                        + "</style></head><body>\n<h1>MIRoN simulation: ").append(TimelineReport.escape(title)).append("</h1>\n");
+        out.append(TimelineReport.pageHead("MIRoN simulation: " + title, ".bars{display:flex;flex-wrap:wrap;gap:1em}"))
+                .append("<h1>MIRoN simulation: ").append(TimelineReport.escape(title)).append("</h1>\n");
         int runs = results.isEmpty() ? 0 : results.get(0).runs().size();
         out.append("<p>").append(runs).append(" run(s) per policy; bars are means, whiskers 95 % confidence intervals.</p>\n");
         out.append("<h2>Measures</h2>\n<div class=\"bars\">\n");

@@ -122,17 +122,27 @@ public final class TimelineReport {
     }
 
     public Path write(Path file) throws IOException {
+        return writePage(file, html());
+    }
+
+    /** Writes a report page (UTF-8), making its folder. */
+    static Path writePage(Path file, String html) throws IOException {
         Files.createDirectories(file.toAbsolutePath().getParent());
-        Files.writeString(file, html(), StandardCharsets.UTF_8);
+        Files.writeString(file, html, StandardCharsets.UTF_8);
         return file;
+    }
+
+    /** A report page's start up to {@code <body>}: the reports' common style, then the page's own. */
+    static String pageHead(String title, String style) {
+        return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + escape(title)
+                + "</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}h2{margin-top:1.5em}"
+                + "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;text-align:left;"
+                + "font-size:13px}svg text{font-size:12px}" + style + "</style></head><body>\n";
     }
 
     String html() {
         StringBuilder out = new StringBuilder();
-        out.append("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>")
-                .append(escape(title)).append("</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}"
-                        + "h2{margin-top:1.5em}table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;"
-                        + "text-align:left;font-size:13px}svg text{font-size:12px}figure{margin:1em 0;overflow-x:auto}figcaption{font-weight:bold;margin-bottom:.3em}</style></head><body>\n")
+        out.append(pageHead(title, "figure{margin:1em 0;overflow-x:auto}figcaption{font-weight:bold;margin-bottom:.3em}"))
                 .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
                 .append(" adaptations in ").append(seconds(end)).append(" s")
                 .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");
