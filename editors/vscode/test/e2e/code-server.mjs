@@ -1084,9 +1084,13 @@ async function diagramChecks(page, u) {
     });
     await check('the diagram follows the active editor: a .miron shows its variation points', async () => {
         await u.open('intralogistics.miron');
-        const frame = await diagramFrame();
-        await until('a variation point in the SVG', async () => (await frame.locator('svg.sprotty-graph g.node-varpoint').count()) > 0)
-            .catch(async (e) => { throw new Error(`${e.message}; ${await diagramState(frame)}`); });
+        // The webview's frame is looked for again at each try: the check must not hang on a frame VS Code replaced.
+        const frame = await until('a variation point in the SVG', async () => {
+            for (const f of page.frames()) {
+                if (await f.locator('svg.sprotty-graph g.node-varpoint').count().catch(() => 0)) return f;
+            }
+            return undefined;
+        }).catch(async (e) => { throw new Error(`${e.message}; ${await diagramState(await diagramFrame())}`); });
         await fitted(frame, 'the .miron model, the file the panel follows now,');
         const variants = await arrowed(frame, 'variant');
         if (variants.edges === 0 || variants.bad > 0) throw new Error(`variant edges without an arrowhead at their end: ${JSON.stringify(variants)}`);
