@@ -965,6 +965,17 @@ async function diagramChecks(page, u) {
         return undefined;
     });
     const titles = (frame) => frame.locator('svg.sprotty-graph text.label-title').allTextContents();
+    /** What a failed diagram check saw: the webview's status line and the last diagram messages of the LSP trace. */
+    const diagramState = async (frame) => {
+        const status = await frame.locator('.sprotty-status-message').innerText({ timeout: 2000 }).catch(() => '?');
+        const messages = outputLog().split(/^(?=\[Trace - )/m).filter((m) => /notification 'diagram\//.test(m)).map((m) => {
+            const head = m.match(/^\[Trace - ([^\]]*)\] (Sending|Received) notification '([^']*)'/);
+            const kind = m.match(/"kind": "([^"]*)"/)?.[1] ?? '';
+            const detail = m.match(/"(?:sourceUri|message)": "([^"]*)"/)?.[1]?.replace(/^.*\//, '') ?? '';
+            return head ? `${head[1]} ${head[2] === 'Sending' ? '→' : '←'} ${head[3]} ${kind} ${detail}`.trim() : '';
+        });
+        return `status "${status}", titles ${await titles(frame).catch(() => '?')}; last diagram messages: ${messages.slice(-10).join(' | ')}`;
+    };
     /** The webview's SVG and its graph (the group Sprotty scales and scrolls): their boxes on screen and its transform. */
     const viewport = (frame) => frame.evaluate(() => {
         const svg = document.querySelector('svg.sprotty-graph');
@@ -1073,8 +1084,13 @@ async function diagramChecks(page, u) {
     });
     await check('the diagram follows the active editor: a .miron shows its variation points', async () => {
         await u.open('intralogistics.miron');
-        const frame = await diagramFrame();
-        await until('a variation point in the SVG', async () => (await frame.locator('svg.sprotty-graph g.node-varpoint').count()) > 0);
+        // The webview's frame is looked for again at each try: the check must not hang on a frame VS Code replaced.
+        const frame = await until('a variation point in the SVG', async () => {
+            for (const f of page.frames()) {
+                if (await f.locator('svg.sprotty-graph g.node-varpoint').count().catch(() => 0)) return f;
+            }
+            return undefined;
+        }).catch(async (e) => { throw new Error(`${e.message}; ${await diagramState(await diagramFrame())}`); });
         await fitted(frame, 'the .miron model, the file the panel follows now,');
         const variants = await arrowed(frame, 'variant');
         if (variants.edges === 0 || variants.bad > 0) throw new Error(`variant edges without an arrowhead at their end: ${JSON.stringify(variants)}`);

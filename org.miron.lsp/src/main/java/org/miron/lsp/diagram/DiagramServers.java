@@ -1,10 +1,13 @@
 package org.miron.lsp.diagram;
 
+import java.lang.System.Logger.Level;
 import java.util.Map;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executor;
+import java.util.concurrent.TimeUnit;
 import java.util.function.BiConsumer;
 import java.util.Set;
 import java.util.function.BiFunction;
@@ -25,6 +28,9 @@ import com.google.gson.JsonObject;
  * ({@code diagram/openInTextEditor}, which sprotty-vscode handles).
  */
 public final class DiagramServers {
+    private static final System.Logger LOG = System.getLogger(DiagramServers.class.getName());
+    /** Long enough for the refresh that follows an edit's write to have been asked for. */
+    private static final Executor ASK_AGAIN = CompletableFuture.delayedExecutor(100, TimeUnit.MILLISECONDS);
     private final Map<String, MironDiagramServer> servers = new ConcurrentHashMap<>();
     private final BiFunction<String, Set<String>, CompletableFuture<DiagramGeneration.Generated>> generate;
     /** A resource's URI as the client writes it (file:///...). */
@@ -73,23 +79,29 @@ public final class DiagramServers {
     }
 
     // Models are read in parallel and an edit cancels the reads before it: only the model of the
-    // latest request is shown, whichever read ends first.
+    // latest read is shown, whichever read ends first (the server checks, under its lock).
     private CompletableFuture<?> refresh(MironDiagramServer server) {
-        String uri = server.sourceUri();
-        if (uri == null) {
+        MironDiagramServer.Read read = server.nextRead();
+        if (read == null) {
             return CompletableFuture.completedFuture(null);
         }
-        long request = server.nextRequest();
-        String file = uri.substring(uri.lastIndexOf('/') + 1);
-        return generate.apply(uri, server.expandedCalls()).handle((generated, failure) -> {
-            if (!server.isLatest(request) || failure instanceof CancellationException
+        String file = read.uri().substring(read.uri().lastIndexOf('/') + 1);
+        return generate.apply(read.uri(), read.expandedCalls()).handle((generated, failure) -> {
+            if (failure instanceof CancellationException
                     || failure != null && failure.getCause() instanceof CancellationException) {
-                return null;
-            }
-            if (failure != null) {
-                server.fail(file + ": no diagram (" + reason(failure) + ")");
+                // A write cancelled the read. An edit asks again itself (refreshAll); after a
+                // write that builds nothing, the latest read is made again, so that a client
+                // never waits for its model for ever.
+                ASK_AGAIN.execute(() -> {
+                    if (server.isLatest(read.number())) {
+                        refresh(server);
+                    }
+                });
+            } else if (failure != null) {
+                LOG.log(Level.WARNING, "no diagram of " + read.uri(), failure);
+                server.fail(read.number(), file + ": no diagram (" + reason(failure) + ")");
             } else {
-                server.show(generated, file);
+                server.show(read.number(), generated, file);
             }
             return null;
         });

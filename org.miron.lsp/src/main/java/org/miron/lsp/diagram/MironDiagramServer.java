@@ -58,8 +58,11 @@ public class MironDiagramServer extends DefaultDiagramServer {
 
     // A model request (a new webview, or the panel now following another editor) is answered
     // once the file is read: the source may have changed, so the model is made again.
+    // Requests, and the models that answer them, are taken under this server's lock: models are
+    // read on several threads, and a read that ends late must never show an older file after a
+    // newer one (Sprotty's server also drops, silently, a model whose revision was overtaken).
     @Override
-    protected void handle(RequestModelAction request) {
+    protected synchronized void handle(RequestModelAction request) {
         copyOptions(request);
         this.request = request;
         shown = false;
@@ -68,16 +71,36 @@ public class MironDiagramServer extends DefaultDiagramServer {
         refresh.accept(this);
     }
 
-    long nextRequest() {
-        return requests.incrementAndGet();
+    /** A model to read: the file shown, the expanded calls, and the number that makes it the latest. */
+    record Read(String uri, Set<String> expandedCalls, long number) {
     }
 
-    boolean isLatest(long request) {
-        return requests.get() == request;
+    /** The next model to read, which makes any earlier read stale; null when no file is shown yet. */
+    synchronized Read nextRead() {
+        String uri = sourceUri();
+        return uri == null ? null : new Read(uri, expandedCalls(), requests.incrementAndGet());
+    }
+
+    boolean isLatest(long read) {
+        return requests.get() == read;
+    }
+
+    /** Shows the model of a read, unless a newer read was asked for since. */
+    synchronized void show(long read, DiagramGeneration.Generated generated, String file) {
+        if (isLatest(read)) {
+            show(generated, file);
+        }
+    }
+
+    /** Says why the latest read has no model; the diagram keeps the last one. */
+    synchronized void fail(long read, String message) {
+        if (isLatest(read)) {
+            status(new ServerStatus(ServerStatus.Severity.ERROR, message));
+        }
     }
 
     /** Shows a new model: the first as a SetModelAction, the next ones as updates. */
-    void show(DiagramGeneration.Generated generated, String file) {
+    private void show(DiagramGeneration.Generated generated, String file) {
         if (!generated.parsed()) {
             status(new ServerStatus(ServerStatus.Severity.ERROR,
                     file + " does not parse: the diagram shows the last version that did"));
@@ -129,10 +152,6 @@ public class MironDiagramServer extends DefaultDiagramServer {
         } else {
             setModel(root);
         }
-    }
-
-    void fail(String message) {
-        status(new ServerStatus(ServerStatus.Severity.ERROR, message));
     }
 
     private void status(ServerStatus status) {
