@@ -5,29 +5,24 @@ import org.eclipse.xtext.ide.LexerIdeBindings;
 import org.eclipse.xtext.ide.editor.contentassist.CompletionPrefixProvider;
 import org.eclipse.xtext.ide.editor.contentassist.IdeContentProposalProvider;
 import org.eclipse.xtext.ide.editor.contentassist.antlr.internal.Lexer;
-import org.eclipse.xtext.ide.server.codeActions.ICodeActionService2;
-import org.eclipse.xtext.ide.server.formatting.FormattingService;
-import org.eclipse.xtext.resource.EObjectAtOffsetHelper;
-import org.eclipse.xtext.ide.server.rename.IRenameService2;
-import org.eclipse.xtext.ide.server.symbol.DocumentSymbolService;
 import org.eclipse.xtext.ide.server.hover.IHoverService;
-import org.eclipse.xtext.ide.server.occurrences.IDocumentHighlightService;
-import org.miron.bt.ide.codeactions.IssueDataCodeActions;
 import org.miron.bt.ide.contentassist.BtProposalProvider;
 import org.miron.bt.ide.contentassist.antlr.BtContentAssistLexer;
-import org.miron.bt.ide.server.NamelessSafeOffsetHelper;
-import org.miron.bt.ide.server.PlainErrorRenameService;
-import org.miron.bt.ide.server.ResolvedOnlySymbolService;
-import org.miron.bt.ide.server.SymbolOnlyHighlightService;
-import org.miron.bt.ide.server.SyntaxSafeFormattingService;
 import org.miron.bt.ide.hover.BtDocumentationProvider;
 import org.miron.bt.ide.hover.BtHoverService;
+import org.miron.bt.ide.server.MironServerBindings;
 
 import com.google.inject.Binder;
 import com.google.inject.name.Names;
+import com.google.inject.util.Modules;
 
 /** Guice bindings of the BT language's ide services (used by the language server). */
 public class BtIdeModule extends AbstractBtIdeModule {
+
+    @Override
+    public void configure(Binder binder) {
+        Modules.override(super::configure).with(new MironServerBindings()).configure(binder);
+    }
 
     // The content-assist lexer must cut <TreeNodesModel> into one token, as the runtime lexer does.
     @Override
@@ -46,45 +41,11 @@ public class BtIdeModule extends AbstractBtIdeModule {
         return BtDocumentationProvider.class;
     }
 
-    public Class<? extends ICodeActionService2> bindICodeActionService2() {
-        return IssueDataCodeActions.class;
-    }
-
     public Class<? extends IHoverService> bindIHoverService() {
         return BtHoverService.class;
     }
 
     public Class<? extends IdeContentProposalProvider> bindIdeContentProposalProvider() {
         return BtProposalProvider.class;
-    }
-
-    public Class<? extends FormattingService> bindFormattingService() {
-        return SyntaxSafeFormattingService.class;
-    }
-
-    public Class<? extends DocumentSymbolService> bindDocumentSymbolService() {
-        return ResolvedOnlySymbolService.class;
-    }
-
-    public Class<? extends IRenameService2> bindIRenameService2() {
-        return PlainErrorRenameService.class;
-    }
-
-    public Class<? extends EObjectAtOffsetHelper> bindEObjectAtOffsetHelper() {
-        return NamelessSafeOffsetHelper.class;
-    }
-
-    // A nested class: Xtext's bind-method naming cannot name it.
-    public void configureSymbolKinds(com.google.inject.Binder binder) {
-        binder.bind(org.eclipse.xtext.ide.server.symbol.DocumentSymbolMapper.DocumentSymbolKindProvider.class)
-                .to(org.miron.bt.ide.server.MironSymbolKinds.class);
-    }
-
-    public Class<? extends org.eclipse.xtext.ide.editor.syntaxcoloring.ISemanticHighlightingCalculator> bindISemanticHighlightingCalculator() {
-        return org.miron.bt.ide.server.MironSemanticHighlighter.class;
-    }
-
-    public Class<? extends IDocumentHighlightService> bindIDocumentHighlightService() {
-        return SymbolOnlyHighlightService.class;
     }
 }
