@@ -135,7 +135,7 @@ public class DemoCommandTest {
         int fast = told.indexOf("ADAPT   maxVelocity -> 100", slow);
         assertTrue(told, 0 <= safetyLow && safetyLow < slow && slow < fast);
         // The battery runs low: the tree switches to the Charge subtree, then back after charging.
-        int batteryLow = told.indexOf("batteryLow fired: undermines power_autonomy (veryhigh) → power_autonomy");
+        int batteryLow = told.indexOf("batteryLow fired: undermines power_autonomy (veryhigh)");
         int dock = told.indexOf("ADAPT   task -> dock (behaviour tree switches branch)");
         int charged = told.indexOf("ADAPT   task -> pickDeliverCharge", dock);
         assertTrue(told, 0 <= batteryLow && batteryLow < dock && dock < charged);

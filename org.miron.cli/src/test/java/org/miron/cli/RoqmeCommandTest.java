@@ -138,7 +138,7 @@ public class RoqmeCommandTest {
         String[] lines = roqme.out().split("\n");
         assertEquals("tick,time,safety,mission_completion,power_autonomy,fired", lines[0]);
         assertTrue(roqme.out(), lines[1].endsWith(",batteryHigh"));
-        assertTrue(roqme.out(), lines[2].endsWith(",batteryLow:batteryHalf")); // 25 < LowBattery 30 and < 60
+        assertTrue(roqme.out(), lines[2].endsWith(",batteryLow:stillLow:batteryHalf")); // 25 < LowBattery 30 and < 60
         Cli miron = new Cli();
         assertEquals(miron.err.toString(), 0, miron.run("roqme", "replay", example.resolve("intralogistics.miron").toString(),
                 "--trace", trace.toString()));

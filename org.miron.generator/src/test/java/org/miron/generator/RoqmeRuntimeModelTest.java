@@ -83,7 +83,7 @@ public class RoqmeRuntimeModelTest {
                 "EmergencyStop", "HumanNearby"), ids(model, "contexts"));
         assertEquals(List.of("safety", "mission_completion", "power_autonomy"), ids(model, "beliefs"));
         assertEquals(List.of("tooClose", "personNearby", "emergency", "openSpace", "delivered", "idle", "batteryLow",
-                "batteryHigh", "batteryHalf", "charging", "recharged"), ids(model, "observations"));
+                "stillLow", "batteryHigh", "batteryHalf", "charging", "recharged"), ids(model, "observations"));
         JsonNode safety = find(model, "beliefs", "safety");
         assertEquals("Intralogistics", safety.get("namespace").asText());
         assertEquals(at(roqme, "property ", "safety"), safety.get("at").asText());

@@ -132,7 +132,7 @@ public class DemoTest {
         int fast = told.indexOf("ADAPT   maxVelocity -> 100", slow);
         assertTrue(told, 0 <= near && near < slow && slow < fast);
         // the battery runs low: batteryLow fires, the tree docks; the recharge clears that evidence and it resumes
-        int low = told.indexOf("batteryLow fired: undermines power_autonomy (veryhigh) → power_autonomy ");
+        int low = told.indexOf("batteryLow fired: undermines power_autonomy (veryhigh)");
         int dock = told.indexOf("ADAPT   task -> dock (behaviour tree switches branch)");
         int recharged = told.indexOf("recharged fired: clears power_autonomy, reinforces power_autonomy (high)");
         int resume = told.indexOf("ADAPT   task -> pickDeliverCharge", dock);
