@@ -30,6 +30,9 @@ public final class World {
         final Map<String, Object> inputs;
         final CompletableFuture<SkillResult> result = new CompletableFuture<>();
         long end;
+        /** Share of the skill done at {@code timedAt}, when its end was last computed. */
+        double done;
+        long timedAt;
         String targetPlace;
         double tx;
         double ty;
@@ -138,8 +141,34 @@ public final class World {
 
     /** A component parameter changed by the adaptation (change-parameter), as a number or boolean. */
     public void setParameter(String name, Object value) {
-        if (model.parameters().containsKey(name)) {
+        if (model.parameters().containsKey(name) && !same(value(name), value)) {
             board.set(name, value);
+            retime();
+        }
+    }
+
+    private static boolean same(Object a, Object b) {
+        return a instanceof Number x && b instanceof Number y ? x.doubleValue() == y.doubleValue() : java.util.Objects.equals(a, b);
+    }
+
+    // A parameter changed while skills run (the robot slowed down mid-move): each running skill's
+    // duration is evaluated again, and the share still to do takes that share of the new
+    // duration. What is done stays done; a skill whose duration does not read the parameter ends
+    // when it would have.
+    private void retime() {
+        for (Run r : runs) {
+            if (r.failed || r.end <= now || r.end <= r.timedAt) {
+                continue;
+            }
+            double done = r.done + (1 - r.done) * (now - r.timedAt) / (double) (r.end - r.timedAt);
+            setInputs(r);
+            double seconds = number(r.model.duration());
+            if (!Double.isFinite(seconds) || seconds <= 0) {
+                continue;
+            }
+            r.done = done;
+            r.timedAt = now;
+            r.end = now + Math.round((1 - done) * seconds * 1000);
         }
     }
 
@@ -287,6 +316,7 @@ public final class World {
             place = "";
         }
         double seconds = number(m.duration());
+        r.timedAt = now;
         r.end = now + (Double.isFinite(seconds) && seconds > 0 ? Math.round(seconds * 1000) : 0);
         return handle(r);
     }

@@ -83,6 +83,31 @@ public class WorldTest {
     }
 
     @Test
+    public void aSpeedChangeMidMoveLengthensTheRestOfTheMoveOnly() throws Exception {
+        World w = new World(model(), 1);
+        w.start(0);
+        SkillHandle move = w.push(new SkillRequest("MoveTo", Map.of("x", 30.0, "y", 40.0)));
+        runUntil(w, 10_000); // 50 m at 2 m/s: 20 m done, 30 m to go
+        w.setParameter("speed", 1.0);
+        runUntil(w, 39_999);
+        assertFalse("the 30 m left at 1 m/s take 30 s more", move.result().isDone());
+        runUntil(w, 40_000);
+        assertEquals(SkillResult.Outcome.SUCCESS, move.result().getNow(null).outcome());
+        // 10 s at -1 %/s, then 30 s at -0.5 %/s: the drain follows the speed too
+        assertEquals(25.0, ((Number) w.value("battery")).doubleValue(), 1e-9);
+
+        // A skill whose duration does not read the parameter ends when it would have; the same value again changes nothing.
+        SkillHandle pick = w.push(new SkillRequest("Pick", Map.of()));
+        runUntil(w, 42_000);
+        w.setParameter("speed", 3.0);
+        w.setParameter("speed", 3);
+        runUntil(w, 43_999);
+        assertFalse(pick.result().isDone());
+        runUntil(w, 44_000);
+        assertTrue(pick.result().isDone());
+    }
+
+    @Test
     public void pathLengthsReplaceTheStraightLineAndUnknownPlacesFail() throws Exception {
         World w = new World(model(), 1);
         w.start(0);
