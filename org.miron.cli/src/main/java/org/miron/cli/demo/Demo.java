@@ -215,7 +215,12 @@ public final class Demo {
             player.play(10_000);
             return;
         }
-        world.begin();
+        // The world's clock starts with the first skill the robot pushes, not before: a cold JVM
+        // takes a second or two to get that push through, and the robot would sit docked,
+        // charging, meanwhile, so that the story would depend on the machine. At the latest after 10 s.
+        if (!world.awaitStarted(10_000)) {
+            world.begin();
+        }
         Thread.sleep(Math.round(worldMs * timeScale));
     }
 

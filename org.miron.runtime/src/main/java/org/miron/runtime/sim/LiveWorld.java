@@ -5,6 +5,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import org.miron.executor.skills.SkillHandle;
 import org.miron.executor.skills.SkillRequest;
@@ -40,6 +42,7 @@ public final class LiveWorld implements SkillBehaviour {
     private Results results;
     private long wallStart = -1;
     private final Map<String, Object> earlyParameters = new LinkedHashMap<>(); // changed before the world began
+    private final CountDownLatch begun = new CountDownLatch(1);
     private int toldProblems;
     private String broken; // a world expression that could not run: the world stops, skills fail
 
@@ -70,6 +73,14 @@ public final class LiveWorld implements SkillBehaviour {
         this.bus = new BusClient("world", busIn, null, List.of(), (t, b) -> { }).start();
     }
 
+    /**
+     * Waits until the world's clock has started (the first skill pushed, or {@link #begin()} and the
+     * mock's next step), at most {@code timeoutMs}; true if it has.
+     */
+    public boolean awaitStarted(long timeoutMs) throws InterruptedException {
+        return begun.await(timeoutMs, TimeUnit.MILLISECONDS);
+    }
+
     private boolean started(long nowMs) {
         if (driver == null && beginAsked) {
             wallStart = nowMs;
@@ -77,6 +88,7 @@ public final class LiveWorld implements SkillBehaviour {
             earlyParameters.forEach(driver.world()::setParameter);
             driver.start(0);
             LOG.info("world started: " + model.source());
+            begun.countDown();
         }
         return driver != null;
     }

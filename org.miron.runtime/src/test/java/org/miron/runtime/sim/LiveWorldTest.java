@@ -2,10 +2,12 @@ package org.miron.runtime.sim;
 
 import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.junit.After;
@@ -132,6 +134,24 @@ public class LiveWorldTest {
         assertEquals(after[0], after[1], 1e-9);
         assertTrue("drained " + (50 - after[0]) + " % before the abort", after[0] > 40);
         assertTrue(probe.messages("roqme.context").stream().noneMatch(m -> m.body().path("name").asText().equals("Arrived")));
+    }
+
+    // Demo waits for this: the world's clock starts with the first skill pushed, so a robot slow to
+    // start does not sit charging at the dock meanwhile.
+    @Test
+    public void withoutBeginTheClockStartsWithTheFirstPush() throws Exception {
+        LiveWorld world = new LiveWorld(WorldReader.read(WORLD, "test.world.json", ENV), 1, SCALE, Map.of(), ep.busIn());
+        List<String> finished = new java.util.concurrent.CopyOnWriteArrayList<>();
+        world.start((id, result, value, outputs) -> finished.add(id + " " + result), System.currentTimeMillis());
+        world.advance(System.currentTimeMillis());
+        assertFalse("no clock before a push", world.awaitStarted(100));
+        world.push(7, Json.MAPPER.readTree("{\"name\":\"MoveTo\",\"in-attribute\":{\"x\": 10, \"y\": 0}}"),
+                System.currentTimeMillis());
+        try {
+            assertTrue(world.awaitStarted(0));
+        } finally {
+            world.close();
+        }
     }
 
     /** The first {@code n} Battery readings the world published after wall time {@code t} (their own "time"). */
