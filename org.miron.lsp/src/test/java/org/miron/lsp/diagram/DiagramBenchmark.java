@@ -29,21 +29,21 @@ public final class DiagramBenchmark {
         System.out.println("Keystroke -> diagram update through the language server (" + RUNS + " runs after " + WARM_UP
                 + " warm-up runs; ms)");
         System.out.printf(Locale.ROOT, "%-44s %6s %8s %8s %8s%n", "file", "nodes", "median", "p90", "max");
-        benchmark("intralogistics", "intralogistics.bt", "name=\"pick_retry\"", "bt");
-        benchmark("intralogistics", "intralogistics.miron", null, "miron");
-        benchmark("hospital-delivery", "hospital.bt", "name=\"handover\"", "bt");
-        benchmark("hospital-delivery", "hospital.miron", null, "miron");
+        benchmark("intralogistics", "intralogistics.bt", "name=\"pick_retry\"");
+        benchmark("intralogistics", "intralogistics.miron", null);
+        benchmark("hospital-delivery", "hospital.bt", "name=\"handover\"");
+        benchmark("hospital-delivery", "hospital.miron", null);
         System.exit(0);
     }
 
     /** {@code renamed} null: the keystroke is a space at the end (the diagram is made again all the same). */
-    private static void benchmark(String example, String file, String renamed, String language) throws Exception {
+    private static void benchmark(String example, String file, String renamed) throws Exception {
         Path workspace = Examples.copy(example);
         try (DiagramClient client = new DiagramClient()) {
             client.initialize(workspace);
             Path path = workspace.resolve(file);
             String text = Files.readString(path);
-            String uri = client.open(path, text, language);
+            String uri = client.open(path, text);
             JsonObject request = new JsonObject();
             request.addProperty("kind", "requestModel");
             JsonObject options = new JsonObject();

@@ -1,44 +1,26 @@
 package org.miron.lsp.diagram;
 
 import java.io.IOException;
-import java.io.OutputStream;
-import java.io.PipedInputStream;
-import java.io.PipedOutputStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 
-import org.eclipse.lsp4j.DidChangeTextDocumentParams;
-import org.eclipse.lsp4j.DidOpenTextDocumentParams;
-import org.eclipse.lsp4j.InitializeParams;
-import org.eclipse.lsp4j.InitializedParams;
-import org.eclipse.lsp4j.MessageActionItem;
-import org.eclipse.lsp4j.MessageParams;
-import org.eclipse.lsp4j.PublishDiagnosticsParams;
-import org.eclipse.lsp4j.RegistrationParams;
-import org.eclipse.lsp4j.ShowMessageRequestParams;
-import org.eclipse.lsp4j.TextDocumentContentChangeEvent;
-import org.eclipse.lsp4j.TextDocumentItem;
-import org.eclipse.lsp4j.VersionedTextDocumentIdentifier;
-import org.eclipse.lsp4j.WorkspaceFolder;
-import org.eclipse.lsp4j.jsonrpc.Launcher;
 import org.eclipse.lsp4j.jsonrpc.services.JsonNotification;
-import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
-import org.miron.lsp.server.MironLanguageServer;
+import org.miron.testkit.lsp.LspClient;
 
 import com.google.gson.JsonElement;
 import com.google.gson.JsonObject;
 
 /**
- * An LSP client that is also a diagram client, as sprotty-vscode's extension is: it sends Sprotty
- * actions on {@code diagram/accept} and records what the server sends back (actions, and the
- * {@code diagram/openInTextEditor} reveals), over LSP4J's JSON-RPC to an in-process server.
+ * An LSP client that is also a diagram client, as sprotty-vscode's extension is: the test kit's
+ * {@link LspClient} extended with the diagram notifications. It sends Sprotty actions on
+ * {@code diagram/accept} and records what the server sends back (actions, and the
+ * {@code diagram/openInTextEditor} reveals).
  */
-public final class DiagramClient implements LanguageClient, AutoCloseable {
+public final class DiagramClient implements AutoCloseable {
     static final long TIMEOUT_SECONDS = 60;
 
     /** The server as sprotty-vscode's extension sees it: LSP plus the diagram notifications. */
@@ -83,21 +65,26 @@ public final class DiagramClient implements LanguageClient, AutoCloseable {
         }
     }
 
+    /** What the server sends on the diagram protocol (an LSP4J local service beside the client's). */
+    public final class Notifications {
+        @JsonNotification("diagram/accept")
+        public void diagramAccept(JsonObject message) {
+            record("diagram/accept", message);
+        }
+
+        @JsonNotification("diagram/openInTextEditor")
+        public void openInTextEditor(JsonObject message) {
+            record("diagram/openInTextEditor", message);
+        }
+    }
+
     private final List<Received> received = new ArrayList<>();
+    private final LspClient lsp;
     private final DiagramLanguageServer server;
-    private final OutputStream toServer;
-    private int version = 1;
 
     public DiagramClient() throws IOException {
-        PipedInputStream serverIn = new PipedInputStream(1 << 16);
-        toServer = new PipedOutputStream(serverIn);
-        PipedInputStream clientIn = new PipedInputStream(1 << 16);
-        PipedOutputStream serverOut = new PipedOutputStream(clientIn);
-        MironLanguageServer.serve(serverIn, serverOut, false);
-        Launcher<DiagramLanguageServer> launcher = Launcher.createLauncher(this, DiagramLanguageServer.class, clientIn,
-                toServer);
-        launcher.startListening();
-        server = launcher.getRemoteProxy();
+        lsp = new LspClient(new Notifications(), DiagramLanguageServer.class);
+        server = lsp.server(DiagramLanguageServer.class);
     }
 
     public DiagramLanguageServer server() {
@@ -105,21 +92,15 @@ public final class DiagramClient implements LanguageClient, AutoCloseable {
     }
 
     public void initialize(Path workspace) throws Exception {
-        InitializeParams params = new InitializeParams();
-        params.setWorkspaceFolders(List.of(new WorkspaceFolder(workspace.toUri().toString(), "workspace")));
-        server.initialize(params).get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
-        server.initialized(new InitializedParams());
+        lsp.initialize(workspace);
     }
 
-    public String open(Path file, String text, String language) {
-        String uri = file.toAbsolutePath().normalize().toUri().toString();
-        server.getTextDocumentService().didOpen(new DidOpenTextDocumentParams(new TextDocumentItem(uri, language, 1, text)));
-        return uri;
+    public String open(Path file, String text) {
+        return lsp.open(file, text);
     }
 
     public void change(String uri, String text) {
-        server.getTextDocumentService().didChange(new DidChangeTextDocumentParams(
-                new VersionedTextDocumentIdentifier(uri, ++version), List.of(new TextDocumentContentChangeEvent(text))));
+        lsp.change(uri, text);
     }
 
     /** Sends an action (its JSON) from a diagram client. */
@@ -169,16 +150,6 @@ public final class DiagramClient implements LanguageClient, AutoCloseable {
         }
     }
 
-    @JsonNotification("diagram/accept")
-    public void diagramAccept(JsonObject message) {
-        record("diagram/accept", message);
-    }
-
-    @JsonNotification("diagram/openInTextEditor")
-    public void openInTextEditor(JsonObject message) {
-        record("diagram/openInTextEditor", message);
-    }
-
     private void record(String method, JsonElement params) {
         synchronized (received) {
             received.add(new Received(method, params.getAsJsonObject()));
@@ -187,38 +158,7 @@ public final class DiagramClient implements LanguageClient, AutoCloseable {
     }
 
     @Override
-    public void telemetryEvent(Object object) {
-    }
-
-    @Override
-    public void publishDiagnostics(PublishDiagnosticsParams diagnostics) {
-    }
-
-    @Override
-    public void showMessage(MessageParams messageParams) {
-    }
-
-    @Override
-    public CompletableFuture<MessageActionItem> showMessageRequest(ShowMessageRequestParams requestParams) {
-        return CompletableFuture.completedFuture(null);
-    }
-
-    @Override
-    public void logMessage(MessageParams message) {
-    }
-
-    @Override
-    public CompletableFuture<Void> registerCapability(RegistrationParams params) {
-        return CompletableFuture.completedFuture(null);
-    }
-
-    @Override
     public void close() throws Exception {
-        try {
-            server.shutdown().get(TIMEOUT_SECONDS, TimeUnit.SECONDS);
-            server.exit();
-        } finally {
-            toServer.close();
-        }
+        lsp.close();
     }
 }

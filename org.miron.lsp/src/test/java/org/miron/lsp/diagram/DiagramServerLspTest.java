@@ -48,7 +48,7 @@ public class DiagramServerLspTest {
         client.initialize(workspace);
         bt = workspace.resolve("hospital.bt");
         text = Files.readString(bt);
-        uri = client.open(bt, text, "bt");
+        uri = client.open(bt, text);
     }
 
     @After
@@ -101,7 +101,7 @@ public class DiagramServerLspTest {
         Received update = client.await(edit, r -> "updateModel".equals(r.kind()), "updateModel");
         // The panel follows another file: its first model is fitted again.
         Path miron = workspace.resolve("hospital.miron");
-        String mironUri = client.open(miron, Files.readString(miron), "miron");
+        String mironUri = client.open(miron, Files.readString(miron));
         int follow = client.mark();
         client.send("fit", requestModelAction(mironUri));
         Received mironSet = client.await(follow, r -> "setModel".equals(r.kind()), "setModel of the .miron");
@@ -205,7 +205,7 @@ public class DiagramServerLspTest {
     @Test
     public void aMironModelShowsItsVariationPointsOnTheTree() throws Exception {
         Path miron = workspace.resolve("hospital.miron");
-        String mironUri = client.open(miron, Files.readString(miron), "miron");
+        String mironUri = client.open(miron, Files.readString(miron));
         int mark = client.mark();
         client.send("miron", requestModelAction(mironUri));
         JsonObject graph = client.await(mark, r -> "setModel".equals(r.kind()), "setModel").action().getAsJsonObject("newRoot");

@@ -31,7 +31,6 @@ import org.eclipse.lsp4j.VersionedTextDocumentIdentifier;
 import org.eclipse.lsp4j.WorkspaceClientCapabilities;
 import org.eclipse.lsp4j.WorkspaceFolder;
 import org.eclipse.lsp4j.jsonrpc.Launcher;
-import org.eclipse.lsp4j.launch.LSPLauncher;
 import org.eclipse.lsp4j.services.LanguageClient;
 import org.eclipse.lsp4j.services.LanguageServer;
 import org.miron.lsp.server.MironLanguageServer;
@@ -51,28 +50,53 @@ public final class LspClient implements LanguageClient, AutoCloseable {
 
     /** A server in this JVM, on piped streams. */
     public LspClient() throws IOException {
-        this(inProcessServer());
+        this(Pipes.toServerInThisJvm(), null, LanguageServer.class);
     }
 
     /** A server at the other end of the streams, e.g. a child process. */
     public LspClient(InputStream fromServer, OutputStream toServer) {
-        this.toServer = toServer;
-        Launcher<LanguageServer> launcher = LSPLauncher.createClientLauncher(this, fromServer, toServer);
+        this(new Pipes(fromServer, toServer), null, LanguageServer.class);
+    }
+
+    /**
+     * A server in this JVM that speaks an extension of LSP, as an editor's extension does (e.g.
+     * sprotty-vscode's {@code diagram/*} notifications): {@code extension} receives what the server
+     * sends beyond LSP (its {@code @JsonNotification} methods), {@code remote} declares what the
+     * client sends; {@link #server(Class)} gives the server as that interface.
+     */
+    public LspClient(Object extension, Class<? extends LanguageServer> remote) throws IOException {
+        this(Pipes.toServerInThisJvm(), extension, remote);
+    }
+
+    @SuppressWarnings("unchecked")
+    private LspClient(Pipes pipes, Object extension, Class<? extends LanguageServer> remote) {
+        this.toServer = pipes.toServer;
+        Launcher<LanguageServer> launcher = new Launcher.Builder<LanguageServer>()
+                .setLocalServices(extension == null ? List.of(this) : List.of(this, extension))
+                .setRemoteInterface((Class<LanguageServer>) remote).setClassLoader(remote.getClassLoader())
+                .setInput(pipes.fromServer).setOutput(pipes.toServer).create();
         launcher.startListening();
         server = launcher.getRemoteProxy();
     }
 
-    private LspClient(Object[] streams) {
-        this((InputStream) streams[0], (OutputStream) streams[1]);
-    }
+    /** The two ends a client talks through. */
+    private static final class Pipes {
+        final InputStream fromServer;
+        final OutputStream toServer;
 
-    private static Object[] inProcessServer() throws IOException {
-        PipedInputStream serverIn = new PipedInputStream(1 << 16);
-        PipedOutputStream toServer = new PipedOutputStream(serverIn);
-        PipedInputStream clientIn = new PipedInputStream(1 << 16);
-        PipedOutputStream serverOut = new PipedOutputStream(clientIn);
-        MironLanguageServer.serve(serverIn, serverOut, false);
-        return new Object[] { clientIn, toServer };
+        Pipes(InputStream fromServer, OutputStream toServer) {
+            this.fromServer = fromServer;
+            this.toServer = toServer;
+        }
+
+        static Pipes toServerInThisJvm() throws IOException {
+            PipedInputStream serverIn = new PipedInputStream(1 << 16);
+            PipedOutputStream toServer = new PipedOutputStream(serverIn);
+            PipedInputStream clientIn = new PipedInputStream(1 << 16);
+            PipedOutputStream serverOut = new PipedOutputStream(clientIn);
+            MironLanguageServer.serve(serverIn, serverOut, false);
+            return new Pipes(clientIn, toServer);
+        }
     }
 
     /** A diagnostic's message as plain text. */
@@ -83,6 +107,11 @@ public final class LspClient implements LanguageClient, AutoCloseable {
 
     public LanguageServer server() {
         return server;
+    }
+
+    /** The server as the extended interface it was connected with. */
+    public <S extends LanguageServer> S server(Class<S> as) {
+        return as.cast(server);
     }
 
     /** initialize + initialized with one workspace folder. */
