@@ -28,29 +28,12 @@ public record Endpoints(String request, String skill, String skillEvents, String
     }
 
     /**
-     * Loopback endpoints on five distinct ports free right now: for a one-JVM run that must not
-     * clash with others. All five probe sockets stay open until every port is chosen; probing one
-     * at a time could be handed the same port twice.
+     * Loopback endpoints on five distinct ports free right now, below the ephemeral range
+     * ({@link FreePorts}): for a one-JVM run that must not clash with others.
      */
     public static Endpoints freeLoopback() {
-        java.util.List<java.net.ServerSocket> probes = new java.util.ArrayList<>();
-        try {
-            for (int i = 0; i < 5; i++) {
-                probes.add(new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress()));
-            }
-            return loopback(probes.get(0).getLocalPort(), probes.get(1).getLocalPort(), probes.get(2).getLocalPort(),
-                    probes.get(3).getLocalPort(), probes.get(4).getLocalPort());
-        } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        } finally {
-            for (java.net.ServerSocket probe : probes) {
-                try {
-                    probe.close();
-                } catch (java.io.IOException e) {
-                    // a probe that cannot close leaves its port taken; the bind will say so
-                }
-            }
-        }
+        int[] ports = FreePorts.take(5);
+        return loopback(ports[0], ports[1], ports[2], ports[3], ports[4]);
     }
 
     private static String tcp(int port) {

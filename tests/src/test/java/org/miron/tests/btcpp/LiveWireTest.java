@@ -197,7 +197,8 @@ public class LiveWireTest {
     private static int freePortPair() throws java.io.IOException {
         java.net.InetAddress lo = java.net.InetAddress.getLoopbackAddress();
         for (int i = 0; i < 50; i++) {
-            try (java.net.ServerSocket a = new java.net.ServerSocket(0, 1, lo);
+            // below the ephemeral range, as every port of these tests (FreePorts)
+            try (java.net.ServerSocket a = new java.net.ServerSocket(org.miron.runtime.FreePorts.take(1)[0], 1, lo);
                     java.net.ServerSocket b = new java.net.ServerSocket(a.getLocalPort() + 1, 1, lo)) {
                 return a.getLocalPort();
             } catch (java.net.BindException taken) {
