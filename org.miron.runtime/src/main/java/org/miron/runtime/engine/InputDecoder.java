@@ -55,6 +55,12 @@ public final class InputDecoder {
     }
 
     private void context(JsonNode msg) throws BadInputException {
+        if (matches("context", msg).isEmpty()) {
+            // The robot publishes its contexts for the RoQME provider, which reads them all (and
+            // counts the ones its model does not declare); the engine reads only the few its rules
+            // name. Any other context is not for it: neither an error nor a warning.
+            return;
+        }
         InputSpec in = find("context", msg);
         JsonNode declared = msg.get("type");
         if (declared != null && !declared.isNull() && !declared.asText().equals(in.roqmeType())) {
@@ -111,20 +117,27 @@ public final class InputDecoder {
 
     /** Matches name and namespace; a message without namespace matches by name when unambiguous. */
     private InputSpec find(String kind, JsonNode msg) throws BadInputException {
+        List<InputSpec> hits = matches(kind, msg);
         JsonNode name = msg.get("name");
-        if (name == null || !name.isTextual()) {
-            throw new BadInputException(BadInputException.Kind.MALFORMED, kind + " message without a 'name'");
-        }
         JsonNode ns = msg.get("namespace");
-        List<InputSpec> hits = model.inputs().stream()
-                .filter(i -> i.kind().equals(kind) && i.name().equals(name.asText()))
-                .filter(i -> ns == null || ns.isNull() || i.namespace().equals(ns.asText()))
-                .toList();
         if (hits.size() != 1) {
             throw new BadInputException(BadInputException.Kind.UNKNOWN, (hits.isEmpty() ? "unknown " : "ambiguous ")
                     + kind + " " + (ns == null ? "" : ns.asText() + "::") + name.asText());
         }
         return hits.get(0);
+    }
+
+    /** The inputs of this kind the message names (a message without namespace: all of that name). */
+    private List<InputSpec> matches(String kind, JsonNode msg) throws BadInputException {
+        JsonNode name = msg.get("name");
+        if (name == null || !name.isTextual()) {
+            throw new BadInputException(BadInputException.Kind.MALFORMED, kind + " message without a 'name'");
+        }
+        JsonNode ns = msg.get("namespace");
+        return model.inputs().stream()
+                .filter(i -> i.kind().equals(kind) && i.name().equals(name.asText()))
+                .filter(i -> ns == null || ns.isNull() || i.namespace().equals(ns.asText()))
+                .toList();
     }
 
     private static BadInputException type(InputSpec in, String expected, JsonNode got) {
