@@ -8,6 +8,8 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.io.IOException;
 import org.miron.cli.monitor.LiveMonitor;
 import org.miron.cli.monitor.MonitorServer;
@@ -27,7 +29,7 @@ import picocli.CommandLine.Parameters;
         description = "Run a behaviour tree (.bt or woven .ext.xml): VariantAction nodes follow the engine's "
                 + "decisions, other actions are pushed as skills to the skill interface; prints a trace.",
         exitCodeListHeading = ExitCodes.HEADING,
-        exitCodeList = { "0:the tree succeeded", "1:the tree failed", "2:the tree cannot be loaded",
+        exitCodeList = { "0:the tree succeeded", "1:the tree failed (without --repeat)", "2:the tree cannot be loaded",
                 ExitCodes.SIGTERM + " while running", ExitCodes.SIGINT + " while running" })
 public final class ExecuteCommand implements Callable<Integer> {
     @Parameters(paramLabel = "TREE", description = "the tree file")
@@ -55,6 +57,10 @@ public final class ExecuteCommand implements Callable<Integer> {
             description = "result deadline of a pushed skill (repeatable; * for the others; default 120000): "
                     + "without a result by then the node fails and the skill is aborted")
     Map<String, Long> skillDeadlines = new LinkedHashMap<>();
+
+    @Option(names = "--repeat", description = "run the tree again each time it finishes, as a robot on a round of "
+            + "missions (and the demo) does, until stopped")
+    boolean repeat;
 
     @Option(names = "--monitor", paramLabel = "PORT",
             description = "serve the live monitor page (the tree coloured by node status, the variation points and "
@@ -92,10 +98,15 @@ public final class ExecuteCommand implements Callable<Integer> {
                 return 2;
             }
             CountDownLatch finished = new CountDownLatch(1);
+            AtomicBoolean stopping = new AtomicBoolean();
             Thread hook = new Thread(() -> {
-                executor.stop();
+                stopping.set(true);
                 try {
-                    finished.await();
+                    // Stop again until the run ends: with --repeat, a stop that falls between two runs
+                    // would be forgotten by the next one.
+                    do {
+                        executor.stop();
+                    } while (!finished.await(100, TimeUnit.MILLISECONDS));
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
@@ -103,11 +114,16 @@ public final class ExecuteCommand implements Callable<Integer> {
             Runtime.getRuntime().addShutdownHook(hook);
             NodeStatus status;
             try {
-                status = executor.run(Duration.ofMillis(periodMs));
+                do {
+                    status = executor.run(Duration.ofMillis(periodMs));
+                    if (status != NodeStatus.RUNNING) {
+                        System.out.println("tree " + executor.tree().id() + " finished: " + status
+                                + (repeat ? ", starting again" : ""));
+                    }
+                } while (repeat && !stopping.get() && status != NodeStatus.RUNNING);
             } finally {
                 finished.countDown();
             }
-            System.out.println("tree " + executor.tree().id() + " finished: " + status);
             // RUNNING: stopped by a signal; the JVM then exits with the signal's status (ExitCodes)
             return status == NodeStatus.SUCCESS ? 0 : status == NodeStatus.FAILURE ? 1 : 3;
         }

@@ -100,4 +100,32 @@ public class ProcessExitStatusTest {
                     "--skill-events", ep.skillEvents(), "--bus-in", ep.busIn(), "--bus-out", ep.busOut());
         }
     }
+
+    /** With --repeat the tree runs mission after mission, failed or not, until the signal. */
+    @Test
+    public void executeRepeat() throws Exception {
+        Path tree = dir.resolve("t.bt");
+        Files.writeString(tree, "<?xml version=\"1.0\"?>\n<root>\n  <BehaviorTree ID=\"Round\">\n"
+                + "    <Sequence>\n      <Action ID=\"Fetch\"/>\n      <Action ID=\"Drop\"/>\n    </Sequence>\n"
+                + "  </BehaviorTree>\n</root>\n");
+        com.fasterxml.jackson.databind.JsonNode none = com.fasterxml.jackson.databind.node.NullNode.getInstance();
+        SkillTable table = new SkillTable(java.util.Map.of(
+                "Fetch", new SkillTable.Entry(50, "SUCCESS", none, org.miron.runtime.Json.object()),
+                "Drop", new SkillTable.Entry(50, "FAILURE", none, org.miron.runtime.Json.object())));
+        int documented = documentedSigterm("execute");
+        try (Broker broker = new Broker(ep).start();
+                SkillInterfaceMock skills = new SkillInterfaceMock(ep.skill(), ep.skillEvents(), table).start();
+                RuntimeProcess p = RuntimeProcess.start(dir, "execute", "execute", tree.toString(), "--repeat",
+                        "--request", ep.request(), "--skill-events", ep.skillEvents(), "--bus-in", ep.busIn(),
+                        "--bus-out", ep.busOut())) {
+            long end = System.currentTimeMillis() + TIMEOUT;
+            while (p.output().split("tree Round finished: FAILURE, starting again", -1).length < 4
+                    && System.currentTimeMillis() < end) {
+                Thread.sleep(20);
+            }
+            assertTrue("three rounds:\n" + p.output(),
+                    p.output().split("tree Round finished: FAILURE, starting again", -1).length >= 4);
+            assertEquals(p.output(), documented, p.terminate(TIMEOUT));
+        }
+    }
 }
