@@ -98,7 +98,9 @@ public class CommandsTest {
             String[] r = run(new BrokerCommand(), "--request", ep.request(), "--skill", ep.skill(),
                     "--bus-in", ep.busIn(), "--bus-out", ep.busOut());
             assertEquals("2", r[0]);
-            assertTrue(r[1], r[1].startsWith("miron broker: error: broker cannot bind"));
+            // which endpoint and why, in words (JeroMQ itself says "Errno 48")
+            assertTrue(r[1], r[1].startsWith("miron broker: error: broker cannot bind its endpoints: " + ep.request()
+                    + ": address already in use"));
         }
     }
 

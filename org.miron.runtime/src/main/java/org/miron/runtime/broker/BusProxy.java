@@ -1,5 +1,6 @@
 package org.miron.runtime.broker;
 
+import org.miron.runtime.Bind;
 import java.nio.charset.StandardCharsets;
 import java.security.SecureRandom;
 import java.util.ArrayList;
@@ -64,8 +65,8 @@ final class BusProxy implements Runnable {
         xsub.setLinger(0);
         xpub.setLinger(0);
         xpub.setXpubVerbose(true);
-        xsub.bind(inEndpoint);
-        xpub.bind(outEndpoint);
+        Bind.bind(xsub, inEndpoint);
+        Bind.bind(xpub, outEndpoint);
         xsub.send(new byte[] {1}); // subscribe to all topics; XSUB repeats it to every new publisher
         cache.put(List.of(Topics.BROKER_HELLO.getBytes(StandardCharsets.UTF_8), epochBody()));
     }

@@ -1,5 +1,6 @@
 package org.miron.runtime.broker;
 
+import org.miron.runtime.Bind;
 import java.util.logging.Logger;
 import org.miron.runtime.Connect;
 import org.miron.runtime.SocketWait;
@@ -40,7 +41,7 @@ final class RequestProxy implements Runnable {
         // JeroMQ 0.6.0's flag is inverted with respect to libzmq's ZMQ_IMMEDIATE: false means
         // "no pipe before the connection is up" (checked in ParameterRetryTest).
         backend.setImmediate(false);
-        frontend.bind(frontendEndpoint);
+        Bind.bind(frontend, frontendEndpoint);
         Connect.connect(backend, backendEndpoint);
     }
 

@@ -1,5 +1,6 @@
 package org.miron.runtime.skill;
 
+import org.miron.runtime.Bind;
 import org.miron.runtime.Contexts;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -60,8 +61,8 @@ public final class SkillInterfaceMock implements AutoCloseable {
             pub = ctx.createSocket(SocketType.PUB);
             rep.setLinger(0);
             pub.setLinger(0);
-            rep.bind(repEndpoint);
-            pub.bind(pubEndpoint);
+            Bind.bind(rep, repEndpoint);
+            Bind.bind(pub, pubEndpoint);
         } catch (RuntimeException e) {
             ctx.close();
             throw new IllegalStateException("skill interface mock cannot bind: " + e.getMessage(), e);
