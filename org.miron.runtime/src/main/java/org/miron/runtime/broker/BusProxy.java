@@ -1,6 +1,5 @@
 package org.miron.runtime.broker;
 
-import org.miron.runtime.Bind;
 import java.nio.charset.StandardCharsets;
 import java.security.SecureRandom;
 import java.util.ArrayList;
@@ -8,6 +7,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
+import org.miron.runtime.Bind;
 import org.miron.runtime.SocketWait;
 import org.miron.runtime.bus.Topics;
 import org.zeromq.SocketType;

@@ -1,7 +1,7 @@
 package org.miron.runtime.broker;
 
-import org.miron.runtime.Bind;
 import java.util.logging.Logger;
+import org.miron.runtime.Bind;
 import org.miron.runtime.Connect;
 import org.miron.runtime.SocketWait;
 import org.zeromq.SocketType;
