@@ -43,25 +43,26 @@ public class LivePageBrowserTest {
             System.err.println("LivePageBrowserTest: skipped, no chromium on the PATH (apt-get install chromium)");
         }
         Assume.assumeNotNull(chromium);
-        StringWriter out = new StringWriter();
-        StringWriter err = new StringWriter();
-        CommandLine cli = MironCli.commandLine();
-        cli.setOut(new PrintWriter(out, true));
-        cli.setErr(new PrintWriter(err, true));
-        AtomicInteger status = new AtomicInteger(-1);
-        String demoDir = temp.newFolder("demo").getPath();
-        Thread demo = new Thread(() -> status.set(cli.execute("demo", "--model",
-                RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron").toString(), "--out",
-                demoDir, "--time-scale", "1.0", "--monitor", "0")), "demo"); // real time: the charge window lasts seconds even on a loaded machine
-        demo.start();
-        Pattern url = Pattern.compile("live monitor on (http://127\\.0\\.0\\.1:\\d+/)");
-        long end = System.currentTimeMillis() + TIMEOUT_MS;
-        while (!url.matcher(out.toString()).find() && demo.isAlive() && System.currentTimeMillis() < end) {
-            Thread.sleep(20);
-        }
-        Matcher found = url.matcher(out.toString());
-        assertTrue(out + "\n" + err, found.find());
+        // The browser first: its start (seconds on a fresh machine) must not eat the demo's window.
         try (HeadlessChromium browser = new HeadlessChromium(chromium, temp.newFolder("profile").toPath())) {
+            StringWriter out = new StringWriter();
+            StringWriter err = new StringWriter();
+            CommandLine cli = MironCli.commandLine();
+            cli.setOut(new PrintWriter(out, true));
+            cli.setErr(new PrintWriter(err, true));
+            AtomicInteger status = new AtomicInteger(-1);
+            String demoDir = temp.newFolder("demo").getPath();
+            Thread demo = new Thread(() -> status.set(cli.execute("demo", "--model",
+                    RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron").toString(), "--out",
+                    demoDir, "--time-scale", "1.0", "--monitor", "0")), "demo"); // real time: the charge window lasts seconds even on a loaded machine
+            demo.start();
+            Pattern url = Pattern.compile("live monitor on (http://127\\.0\\.0\\.1:\\d+/)");
+            long end = System.currentTimeMillis() + TIMEOUT_MS;
+            while (!url.matcher(out.toString()).find() && demo.isAlive() && System.currentTimeMillis() < end) {
+                Thread.sleep(20);
+            }
+            Matcher found = url.matcher(out.toString());
+            assertTrue(out + "\n" + err, found.find());
             browser.open(found.group(1));
             // Statuses change: several different sets of running nodes are seen while the tree runs.
             Set<String> runningSets = new HashSet<>();
@@ -88,8 +89,8 @@ public class LivePageBrowserTest {
             assertTrue("running nodes seen: " + runningSets, runningSets.size() >= 3);
             assertTrue("ChargeFirst dimmed while preparation = none", sawDefault);
             assertTrue("ChargeFirst outlined once preparation = charge", sawCharge);
+            demo.join(TIMEOUT_MS);
+            assertEquals(err.toString(), 0, status.get());
         }
-        demo.join(TIMEOUT_MS);
-        assertEquals(err.toString(), 0, status.get());
     }
 }
