@@ -3,24 +3,15 @@ package org.miron.cli.monitor;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.util.HashSet;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 import org.junit.Assume;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.cli.MironCli;
-import org.miron.testkit.RepositoryRoot;
 
 import com.fasterxml.jackson.databind.JsonNode;
-
-import picocli.CommandLine;
 
 /**
  * The live page in headless Chromium while `miron demo --monitor` runs the hospital example; the
@@ -45,25 +36,11 @@ public class LivePageBrowserTest {
         Assume.assumeNotNull(chromium);
         // The browser first: its start (seconds on a fresh machine) must not eat the demo's window.
         try (HeadlessChromium browser = new HeadlessChromium(chromium, temp.newFolder("profile").toPath())) {
-            StringWriter out = new StringWriter();
-            StringWriter err = new StringWriter();
-            CommandLine cli = MironCli.commandLine();
-            cli.setOut(new PrintWriter(out, true));
-            cli.setErr(new PrintWriter(err, true));
-            AtomicInteger status = new AtomicInteger(-1);
-            String demoDir = temp.newFolder("demo").getPath();
-            Thread demo = new Thread(() -> status.set(cli.execute("demo", "--model",
-                    RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron").toString(), "--out",
-                    demoDir, "--time-scale", "1.0", "--monitor", "0")), "demo"); // real time: the charge window lasts seconds even on a loaded machine
-            demo.start();
-            Pattern url = Pattern.compile("live monitor on (http://127\\.0\\.0\\.1:\\d+/)");
+            MonitoredDemo demo = new MonitoredDemo(temp.newFolder("demo").getPath(), "1.0"); // real time: the charge window lasts seconds even on a loaded machine
             long end = System.currentTimeMillis() + TIMEOUT_MS;
-            while (!url.matcher(out.toString()).find() && demo.isAlive() && System.currentTimeMillis() < end) {
-                Thread.sleep(20);
-            }
-            Matcher found = url.matcher(out.toString());
-            assertTrue(out + "\n" + err, found.find());
-            browser.open(found.group(1));
+            String url = demo.awaitUrl(TIMEOUT_MS);
+            assertTrue(demo.printed(), url != null);
+            browser.open(url);
             // Statuses change: several different sets of running nodes are seen while the tree runs.
             Set<String> runningSets = new HashSet<>();
             boolean sawDefault = false;
@@ -89,8 +66,7 @@ public class LivePageBrowserTest {
             assertTrue("running nodes seen: " + runningSets, runningSets.size() >= 3);
             assertTrue("ChargeFirst dimmed while preparation = none", sawDefault);
             assertTrue("ChargeFirst outlined once preparation = charge", sawCharge);
-            demo.join(TIMEOUT_MS);
-            assertEquals(err.toString(), 0, status.get());
+            assertEquals(demo.errors(), 0, demo.await(TIMEOUT_MS));
         }
     }
 }
