@@ -8,8 +8,6 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.io.IOException;
 import org.miron.cli.monitor.LiveMonitor;
 import org.miron.cli.monitor.MonitorServer;
@@ -98,15 +96,10 @@ public final class ExecuteCommand implements Callable<Integer> {
                 return 2;
             }
             CountDownLatch finished = new CountDownLatch(1);
-            AtomicBoolean stopping = new AtomicBoolean();
             Thread hook = new Thread(() -> {
-                stopping.set(true);
+                executor.stop(); // with --repeat, a stop between two runs ends the next one
                 try {
-                    // Stop again until the run ends: with --repeat, a stop that falls between two runs
-                    // would be forgotten by the next one.
-                    do {
-                        executor.stop();
-                    } while (!finished.await(100, TimeUnit.MILLISECONDS));
+                    finished.await();
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
@@ -120,7 +113,7 @@ public final class ExecuteCommand implements Callable<Integer> {
                         System.out.println("tree " + executor.tree().id() + " finished: " + status
                                 + (repeat ? ", starting again" : ""));
                     }
-                } while (repeat && !stopping.get() && status != NodeStatus.RUNNING);
+                } while (repeat && status != NodeStatus.RUNNING);
             } finally {
                 finished.countDown();
             }

@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.miron.executor.skills.BlackboardFeed;
 import org.miron.executor.skills.VariantSource;
 import org.miron.executor.trace.StatusListener;
@@ -20,7 +21,8 @@ public final class Tree {
     private final TreeContext context;
     private final int formatVersion;
     private final List<BlackboardFeed> feeds = new CopyOnWriteArrayList<>();
-    private volatile boolean stopRequested;
+    /** A stop asked for and not yet honoured (see {@link #stop()}). */
+    private final AtomicBoolean stopRequested = new AtomicBoolean();
 
     public Tree(String id, Node root, Blackboard blackboard, TreeContext context) {
         this(id, root, blackboard, context, 3);
@@ -70,13 +72,15 @@ public final class Tree {
     /**
      * Ticks the root every {@code period} while it returns RUNNING and returns its final status.
      * If {@link #stop()} is called or the thread is interrupted, halts the tree and returns RUNNING
-     * (the interrupt flag is kept).
+     * (the interrupt flag is kept); a stop asked for before the call returns RUNNING at once.
      */
     public NodeStatus tickWhileRunning(Duration period) {
-        stopRequested = false;
+        if (stopRequested.getAndSet(false)) {
+            return NodeStatus.RUNNING;
+        }
         NodeStatus status = tickRoot();
         while (status == NodeStatus.RUNNING) {
-            if (stopRequested || !pause(period)) {
+            if (stopRequested.getAndSet(false) || !pause(period)) {
                 haltTree();
                 return NodeStatus.RUNNING;
             }
@@ -97,9 +101,13 @@ public final class Tree {
         }
     }
 
-    /** Makes a running {@link #tickWhileRunning} halt the tree and return; safe from any thread. */
+    /**
+     * Makes the running {@link #tickWhileRunning} halt the tree and return, or the next one if none
+     * runs: a stop that falls between two runs (a robot going round its missions) is not forgotten.
+     * Honoured once; safe from any thread.
+     */
     public void stop() {
-        stopRequested = true;
+        stopRequested.set(true);
     }
 
     /** Halts whatever runs and sets every node back to IDLE (call it on the ticking thread). */

@@ -177,6 +177,22 @@ public class ActionsAndTraceTest {
         assertEquals(IDLE, tree.root().status());
     }
 
+    /** A stop between two runs (a robot going round its missions) ends the next run, once. */
+    @Test
+    public void aStopBetweenRunsEndsTheNextRunOnce() {
+        ScriptedAction a = ScriptedAction.register(registry, "A");
+        ScriptedAction.register(registry, "B");
+        ScriptedAction.register(registry, "C");
+        Tree tree = controls("Seq", new TreeContext());
+        assertEquals(SUCCESS, tree.tickWhileRunning(Duration.ZERO));
+        int ticks = a.ticks;
+        tree.stop();
+        assertEquals(RUNNING, tree.tickWhileRunning(Duration.ZERO));
+        assertEquals("nothing ticked", ticks, a.ticks);
+        assertEquals(SUCCESS, tree.tickWhileRunning(Duration.ZERO));
+        assertTrue(a.ticks > ticks);
+    }
+
     @Test
     public void consoleTracePrintsTimePathAndTransition() {
         registry.registerSync("A", ports -> SUCCESS);
