@@ -55,13 +55,14 @@ public final class InputDecoder {
     }
 
     private void context(JsonNode msg) throws BadInputException {
-        if (matches("context", msg).isEmpty()) {
+        List<InputSpec> hits = matches("context", msg);
+        if (hits.isEmpty()) {
             // The robot publishes its contexts for the RoQME provider, which reads them all (and
             // counts the ones its model does not declare); the engine reads only the few its rules
             // name. Any other context is not for it: neither an error nor a warning.
             return;
         }
-        InputSpec in = find("context", msg);
+        InputSpec in = only("context", msg, hits);
         JsonNode declared = msg.get("type");
         if (declared != null && !declared.isNull() && !declared.asText().equals(in.roqmeType())) {
             throw new BadInputException(BadInputException.Kind.TYPE, "context " + in.name() + " is "
@@ -117,7 +118,11 @@ public final class InputDecoder {
 
     /** Matches name and namespace; a message without namespace matches by name when unambiguous. */
     private InputSpec find(String kind, JsonNode msg) throws BadInputException {
-        List<InputSpec> hits = matches(kind, msg);
+        return only(kind, msg, matches(kind, msg));
+    }
+
+    /** The one input the message names, else unknown or ambiguous input. */
+    private static InputSpec only(String kind, JsonNode msg, List<InputSpec> hits) throws BadInputException {
         JsonNode name = msg.get("name");
         JsonNode ns = msg.get("namespace");
         if (hits.size() != 1) {
