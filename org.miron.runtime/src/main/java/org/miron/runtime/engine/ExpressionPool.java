@@ -12,9 +12,10 @@ import java.util.Map;
  * are 1 and 0. Undefined arithmetic (division by zero, sqrt of a negative number, exp above 709,
  * pow outside its real domain: the .mzn's miron_* functions) is NaN, and
  * every comparison with NaN is false: MiniZinc's relational semantics, where an undefined
- * expression makes its nearest enclosing Boolean false.
+ * expression makes its nearest enclosing Boolean false. The requirement monitors
+ * (org.miron.runtime.requirement) evaluate their state formulas, written in the same language, with it.
  */
-final class ExpressionPool {
+public final class ExpressionPool {
     private static final int CONST = 0, PARAM = 1, INDEX = 2, VALUE = 3, OR = 4, AND = 5, NOT = 6, EQ = 7,
             NE = 8, LT = 9, GT = 10, LE = 11, GE = 12, ADD = 13, SUB = 14, MUL = 15, DIV = 16, NEG = 17, IF = 18,
             ABS = 19, SQRT = 20, EXP = 21, POW = 22, MIN = 23, MAX = 24;
@@ -38,14 +39,14 @@ final class ExpressionPool {
      * @param params    parameter name → slot in the array given to {@link #eval}
      * @param varpoints varpoint name → its position in the assignment array
      */
-    ExpressionPool(Map<String, Integer> params, Map<String, Integer> varpoints, double[][] values) {
+    public ExpressionPool(Map<String, Integer> params, Map<String, Integer> varpoints, double[][] values) {
         this.params = params;
         this.varpoints = varpoints;
         this.values = values;
     }
 
     /** Compiles a tree; returns its root. Varpoints it reads are added to {@code reads}. */
-    int compile(JsonNode n, BitSet reads) {
+    public int compile(JsonNode n, BitSet reads) {
         if (n == null || !n.isObject()) {
             throw new IllegalArgumentException("expression " + n + " is not an object");
         }
@@ -103,11 +104,11 @@ final class ExpressionPool {
     }
 
     /** True when the node evaluates to true (1) under the parameters and assignment. */
-    boolean holds(int node, double[] param, int[] assign) {
+    public boolean holds(int node, double[] param, int[] assign) {
         return eval(node, param, assign) == 1;
     }
 
-    double eval(int node, double[] param, int[] assign) {
+    public double eval(int node, double[] param, int[] assign) {
         switch (kind[node]) {
             case CONST:
                 return constant[node];
