@@ -10,7 +10,7 @@ import picocli.CommandLine.Command;
                 + "format, convert (BehaviorTree.CPP 3 and 4), generate and render (SVG diagrams) models; serve them to editors (lsp); run the broker, engine, skill-interface "
                 + "mock, scenario player and BT executor; or all of them at once with demo.",
         subcommands = { CheckCommand.class, FormatCommand.class, ConvertCommand.class, GenerateCommand.class, RenderCommand.class,
-                DemoCommand.class, SimulateCommand.class, BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class, RoqmeCommand.class, DdsBridgeCommand.class,
+                DemoCommand.class, SimulateCommand.class, VerifyCommand.class, BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class, RoqmeCommand.class, DdsBridgeCommand.class,
                 ExecuteCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
 public class MironCli implements Runnable {
 

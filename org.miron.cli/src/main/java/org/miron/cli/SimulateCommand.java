@@ -1,8 +1,6 @@
 package org.miron.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -13,19 +11,11 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import org.miron.cli.demo.SimulationReport;
-import org.miron.generator.RoqmeRuntimeModel;
 import org.miron.runtime.Json;
-import org.miron.runtime.engine.IoModel;
-import org.miron.runtime.roqme.model.ModelException;
-import org.miron.runtime.roqme.model.ModelReader;
-import org.miron.runtime.roqme.model.RoqmeModel;
 import org.miron.runtime.sim.Comparison;
 import org.miron.runtime.sim.Durations;
 import org.miron.runtime.sim.Policy;
 import org.miron.runtime.sim.Setup;
-import org.miron.runtime.sim.WorldException;
-import org.miron.runtime.sim.WorldModel;
-import org.miron.runtime.sim.WorldReader;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -103,40 +93,12 @@ public class SimulateCommand implements Callable<Integer> {
         if (!Files.isRegularFile(model) || !Files.isRegularFile(world)) {
             return usage((Files.isRegularFile(model) ? world : model) + ": error: no such file");
         }
-        Path generated = out.resolve("model");
-        String name = model.getFileName().toString().replaceFirst("\\.miron$", "");
-        StringWriter log = new StringWriter();
-        CommandLine generate = MironCli.commandLine();
-        generate.setOut(new PrintWriter(log));
-        generate.setErr(new PrintWriter(log));
-        int status = generate.execute("generate", "-o", generated.toString(), model.toString());
-        if (status != 0) {
-            err.print(log);
-            err.flush();
-            return status;
+        SimulationModel.Loaded loaded = SimulationModel.load(model, world, out, parsed, err, "simulate", 1);
+        if (loaded.setup() == null) {
+            return loaded.status();
         }
         Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
-        Setup setup;
-        try {
-            IoModel io = IoModel.load(generated.resolve(name + ".io.json"));
-            RoqmeModel roqme = ModelReader.read(generated.resolve(name + RoqmeRuntimeModel.SUFFIX));
-            Path tree = generated.resolve(name + ".ext.xml");
-            WorldModel w = WorldReader.read(world, Setup.env(tree, roqme));
-            setup = new Setup(io, roqme, tree, w);
-            for (Policy p : parsed) {
-                if (!p.adaptive()) {
-                    p.configuration(io); // unknown varpoints and values are refused before anything runs
-                }
-            }
-        } catch (WorldException e) {
-            e.problems().forEach(err::println);
-            err.flush();
-            return 1;
-        } catch (ModelException | IOException e) {
-            return usage("miron simulate: error: " + e.getMessage());
-        } catch (RuntimeException e) { // a policy naming no varpoint, a tree the executor cannot build
-            return usage("miron simulate: error: " + e.getMessage());
-        }
+        Setup setup = loaded.setup();
         int cores = threads != null ? Math.max(1, threads) : Runtime.getRuntime().availableProcessors();
         console.println("MIRoN simulate: " + model.getFileName() + " in " + world.getFileName() + ", " + runs + " run(s) of "
                 + duration + " per policy, seed " + seed);

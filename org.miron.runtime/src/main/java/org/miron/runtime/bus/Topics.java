@@ -15,6 +15,8 @@ public final class Topics {
     /** The BT executor: every node status change, and the tree it runs (docs/wire-formats.md). */
     public static final String BT_STATUS = "miron.bt.status";
     public static final String BT_TREE = "miron.bt.tree";
+    /** A requirement violated, or met again (docs/requirements.md). */
+    public static final String REQUIREMENT = "miron.requirement";
     /** The broker's own topics: its hello (with its epoch) and the replies to sync subscriptions. */
     public static final String BROKER_PREFIX = "miron.broker.";
     public static final String BROKER_HELLO = "miron.broker.hello";

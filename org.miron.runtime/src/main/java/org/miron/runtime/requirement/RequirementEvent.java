@@ -17,6 +17,11 @@ public record RequirementEvent(String name, String verdict, long timeMs, long de
         return name + " " + verdict + (values.isEmpty() ? "" : ": " + Signals.format(values));
     }
 
+    /** Values as the console writes them: {@code roqme.HumanDistance = 1.0, maxVelocity = 100}. */
+    public static String format(Map<String, Object> values) {
+        return Signals.format(values);
+    }
+
     /** A number of seconds as the console and reports write it: {@code 6.3}. */
     public static String seconds(long ms) {
         return Signals.number(ms / 1000.0);

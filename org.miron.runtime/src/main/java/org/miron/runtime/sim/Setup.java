@@ -14,14 +14,20 @@ import org.miron.executor.skills.SkillActionStrategy;
 import org.miron.executor.skills.SkillClient;
 import org.miron.executor.skills.VariantSource;
 import org.miron.runtime.engine.IoModel;
+import org.miron.runtime.requirement.RequirementModel;
 import org.miron.runtime.roqme.model.RoqmeModel;
 
 /**
  * What every run of a simulation shares, read once: the engine's io.json, the RoQME runtime model,
- * the woven tree and the checked world.
+ * the woven tree, the checked world and, when the model states requirements, what their monitors
+ * read (null: none are checked).
  */
-public record Setup(IoModel io, RoqmeModel roqme, Path tree, WorldModel world) {
+public record Setup(IoModel io, RoqmeModel roqme, Path tree, WorldModel world, RequirementModel requirements) {
     private static final Object TREES = new Object();
+
+    public Setup(IoModel io, RoqmeModel roqme, Path tree, WorldModel world) {
+        this(io, roqme, tree, world, null);
+    }
 
     /** Builds a tree whose actions are pushed to {@code skills}; the BT language is loaded one tree at a time. */
     static Tree buildTree(Path tree, TreeContext context, VariantSource variants, UnregisteredActionStrategy skills) {

@@ -23,6 +23,9 @@ import org.miron.runtime.engine.InputSpec;
 import org.miron.runtime.engine.InputState;
 import org.miron.runtime.engine.NativeBackend;
 import org.miron.runtime.engine.VariationPoint;
+import org.miron.runtime.requirement.RequirementMessages;
+import org.miron.runtime.requirement.RequirementMonitors;
+import org.miron.runtime.requirement.RequirementResult;
 import org.miron.runtime.roqme.ObservationMessage;
 import org.miron.runtime.roqme.Provider;
 import org.miron.runtime.roqme.expr.CompiledModel;
@@ -40,8 +43,12 @@ import org.miron.runtime.sim.WorldModel.Publication;
  * starts again after the world's restart delay.
  */
 public final class Simulation {
-    /** What a run measured; {@code timeline}: what it recorded for the report (empty unless asked). */
-    public record Result(Map<String, Double> measures, List<String> problems, List<TimelineEvent> timeline) {
+    /**
+     * What a run measured; {@code timeline}: what it recorded for the report (empty unless asked);
+     * {@code requirements}: each requirement's result over the run (empty when none is checked).
+     */
+    public record Result(Map<String, Double> measures, List<String> problems, List<TimelineEvent> timeline,
+            List<RequirementResult> requirements) {
     }
 
     private static final int MAX_STEPS_PER_INSTANT = 1000;
@@ -66,6 +73,11 @@ public final class Simulation {
     private final Map<String, InputSpec> engineMetrics = new HashMap<>();
     private final Map<String, RoqmeModel.Variable> contexts = new HashMap<>();
     private final List<TimelineEvent> timeline = new ArrayList<>();
+    private final RequirementMonitors monitors;
+    /** Derived contexts the requirements read: fed from the provider as the engine's are. */
+    private final List<RoqmeModel.Variable> monitoredDerived = new ArrayList<>();
+    private final Map<String, Object> lastMonitoredDerived = new HashMap<>();
+    private long timelineFrom;
     private final double[] lastEstimates;
     private long now;
     private long seenVersion = -1;
@@ -104,16 +116,40 @@ public final class Simulation {
             }
         }
         lastDerived = new Object[derivedInputs.size()];
+        monitors = setup.requirements() == null || setup.requirements().requirements().isEmpty() ? null
+                : new RequirementMonitors(setup.requirements());
+        if (monitors != null) {
+            monitors.onEvent(e -> {
+                if (inTimeline(e.timeMs())) {
+                    timeline.add(new TimelineEvent(e.timeMs(), Topics.REQUIREMENT, RequirementMessages.event(e)));
+                }
+            });
+            for (RoqmeModel.Variable v : setup.roqme().contexts()) {
+                if (v.derived() != null && !v.derived().isNull() && monitors.contexts().contains(v.name())) {
+                    monitoredDerived.add(v);
+                }
+            }
+        }
         List<String> properties = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
                 .map(RoqmeModel.Belief::name).toList();
         lastEstimates = setup.roqme().beliefs().stream().filter(RoqmeModel.Belief::isProperty)
                 .mapToDouble(RoqmeModel.Belief::ref).toArray();
         measures = new Measures(setup.world().measures(), properties, lastEstimates);
         provider.onFire((o, t) -> {
-            if (t <= timelineMs) {
+            if (inTimeline(t)) {
                 timeline.add(new TimelineEvent(t, Topics.OBSERVATION, observation(o.decl())));
             }
         });
+    }
+
+    /** Records the timeline over {@code [fromMs, toMs]} instead of from the start (a counterexample's surroundings). */
+    public Simulation timelineWindow(long fromMs) {
+        this.timelineFrom = fromMs;
+        return this;
+    }
+
+    private boolean inTimeline(long t) {
+        return t >= timelineFrom && t <= timelineMs;
     }
 
     /**
@@ -179,7 +215,8 @@ public final class Simulation {
         out.put("bt:missionsFailed", (double) failed);
         out.put("engine:adaptations", (double) adaptations);
         out.put("engine:solveFailures", (double) solveFailures);
-        return new Result(out, List.copyOf(world.problems()), timeline);
+        List<RequirementResult> checked = monitors == null ? List.of() : monitors.finish(durationMs);
+        return new Result(out, List.copyOf(world.problems()), timeline, checked);
     }
 
     private long wallStart = -1;
@@ -220,7 +257,10 @@ public final class Simulation {
                 if (in != null) {
                     inputs.setMetric(in, est[i]);
                 }
-                if (t.timeMs() <= timelineMs && Math.abs(est[i] - lastEstimates[i]) > 1e-4) {
+                if (monitors != null) {
+                    monitors.estimate(t.timeMs(), b.name(), est[i]);
+                }
+                if (inTimeline(t.timeMs()) && Math.abs(est[i] - lastEstimates[i]) > 1e-4) {
                     ObjectNode o = Json.object();
                     o.put("name", b.name());
                     o.put("value", est[i]);
@@ -241,7 +281,7 @@ public final class Simulation {
                 apply(c.varpoint(), c.value());
                 adaptations++;
             }
-            if (now <= timelineMs && (!o.changes().isEmpty() || !o.result().solved())) {
+            if (inTimeline(now) && (!o.changes().isEmpty() || !o.result().solved())) {
                 o.entry().remove("solveMs"); // wall-clock time: the report stays the same for the same seed
                 timeline.add(new TimelineEvent(now, Topics.DECISION, o.entry()));
             }
@@ -264,7 +304,7 @@ public final class Simulation {
 
     private void recordSkill() {
         String skill = world.skill();
-        if (!skill.equals(lastSkill) && now <= timelineMs) {
+        if (!skill.equals(lastSkill) && inTimeline(now)) {
             ObjectNode o = Json.object();
             o.put("name", "skill");
             o.put("type", "enum");
@@ -276,6 +316,9 @@ public final class Simulation {
 
     /** A decision reaches the robot: a behaviour variant, a blackboard value or a component parameter. */
     private void apply(VariationPoint vp, JsonNode value) {
+        if (monitors != null) {
+            monitors.varpoint(now, vp.name(), value);
+        }
         switch (vp.bindingType()) {
             case "bt" -> variants.publish(vp.name(), value.asText());
             case "btport" -> blackboard.publish(vp.name(), value.isNumber() ? (Object) value.asDouble()
@@ -291,6 +334,12 @@ public final class Simulation {
      * computes them: the live provider publishes them on change (docs/roqme-provider.md), so does this.
      */
     private void feedDerived() {
+        for (RoqmeModel.Variable v : monitoredDerived) {
+            Object value = provider.value(v.id());
+            if (value != null && !value.equals(lastMonitoredDerived.put(v.name(), value))) {
+                monitors.context(now, v.name(), value);
+            }
+        }
         for (int i = 0; i < derivedInputs.size(); i++) {
             RoqmeModel.Variable v = derivedInputs.get(i);
             Object value = provider.value(v.id());
@@ -328,7 +377,10 @@ public final class Simulation {
         if (in != null) {
             toEngine(in, json);
         }
-        if (changed && now <= timelineMs) {
+        if (monitors != null) {
+            monitors.context(now, p.context(), json);
+        }
+        if (changed && inTimeline(now)) {
             ObjectNode o = Json.object();
             o.put("name", p.context());
             o.put("type", p.event() != null ? "event" : p.type().kind());
