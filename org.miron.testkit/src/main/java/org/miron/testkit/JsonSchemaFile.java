@@ -29,6 +29,8 @@ public final class JsonSchemaFile {
     public static final JsonSchemaFile WORLD = new JsonSchemaFile("docs/world.schema.json");
     /** docs/dds-bridge.schema.json: the configuration of {@code miron dds-bridge}. */
     public static final JsonSchemaFile DDS_BRIDGE = new JsonSchemaFile("docs/dds-bridge.schema.json");
+    /** What `miron verify` writes into OUT/summary.json. */
+    public static final JsonSchemaFile VERIFY_SUMMARY = new JsonSchemaFile("docs/verify-summary.schema.json");
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
     private final String relative;

@@ -15,6 +15,7 @@ import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Json;
 import org.miron.runtime.requirement.RequirementModel;
+import org.miron.testkit.JsonSchemaFile;
 
 /**
  * The requirement monitors on the simulator, from a requirements file written as docs/requirements.md
@@ -119,7 +120,6 @@ public class VerificationTest {
     public void theAdaptiveRobotNeverStrandsThePresetOneDoesAndSlowsDownOnlyAfterAPersonIsNear() throws Exception {
         List<Verification.PolicyResult> r = Verification.run(setup(), List.of(Policy.parse("adaptive"), Policy.parse("preset")),
                 fixed(3));
-        System.out.print(Verification.table(r));
         Map<String, Verification.Check> adaptive = checks(r.get(0));
         Map<String, Verification.Check> preset = checks(r.get(1));
         assertEquals("holds", adaptive.get("neverStranded").verdict());
@@ -152,6 +152,9 @@ public class VerificationTest {
         String again = Json.MAPPER.writeValueAsString(Verification.summary(Verification.run(setup(),
                 List.of(Policy.parse("preset")), new Verification.Options(0, 200, 0.95, 0.05, 1, 3 * 3_600_000, 1)), o));
         assertEquals(first, again);
+        assertEquals(List.of(), JsonSchemaFile.VERIFY_SUMMARY.problems(Json.MAPPER.readTree(first)));
+        List<Verification.PolicyResult> both = Verification.run(setup(), List.of(Policy.parse("adaptive"), Policy.parse("preset")), fixed(2));
+        assertEquals(List.of(), JsonSchemaFile.VERIFY_SUMMARY.problems(Verification.summary(both, fixed(2))));
     }
 
     private static Map<String, Verification.Check> checks(Verification.PolicyResult r) {
