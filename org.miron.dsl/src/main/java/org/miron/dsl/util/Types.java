@@ -99,7 +99,8 @@ public final class Types {
             default:
                 return ExprType.BOOLEAN;
             }
-        } else if (e instanceof WhileExpression || e instanceof RepeatExpression || e instanceof RangeExpression) {
+        } else if (e instanceof WhileExpression || e instanceof RepeatExpression || e instanceof RangeExpression
+                || e instanceof org.miron.dsl.miron.TemporalExpression || e instanceof org.miron.dsl.miron.Implication) {
             return ExprType.BOOLEAN;
         } else if (e instanceof ConditionalExpression) {
             return typeOf(((ConditionalExpression) e).getIfTrue());
