@@ -21,9 +21,9 @@ public final class Formulas {
     private Formulas() {
     }
 
-    /** Whether e has no temporal operator and no implies anywhere: one state formula. */
+    /** Whether e has no temporal operator and no implies anywhere: one state formula (null, half-parsed, counts as one). */
     public static boolean isState(Expression e) {
-        return !(e instanceof TemporalExpression || e instanceof Implication)
+        return e == null || !(e instanceof TemporalExpression || e instanceof Implication)
                 && EcoreUtil2.getAllContentsOfType(e, TemporalExpression.class).isEmpty()
                 && EcoreUtil2.getAllContentsOfType(e, Implication.class).isEmpty();
     }

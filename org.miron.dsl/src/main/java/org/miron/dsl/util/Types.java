@@ -106,7 +106,7 @@ public final class Types {
             return typeOf(((ConditionalExpression) e).getIfTrue());
         } else if (e instanceof FunctionCall) {
             FunctionCall f = (FunctionCall) e;
-            String fn = f.getFunction();
+            String fn = f.getFunction() == null ? "" : f.getFunction(); // null in a half-parsed x'
             if (NUMERIC_FUNCTIONS.contains(fn)) {
                 return ExprType.NUMBER;
             } else if (BOOLEAN_FUNCTIONS.contains(fn)) {
