@@ -28,6 +28,15 @@ public final class AdaptationModel {
             Set<Context> contexts, List<Consequence> consequences) {
     }
 
+    /** A signal a requirement reads: a context, a property or a varpoint, named as the model writes it. */
+    public record Signal(String name, org.miron.dsl.roqme.Variable variable) {
+    }
+
+    /** A requirement: its formula's source text, its formula tree (docs/requirements.md) and its signals in order of first use. */
+    public record TranslatedRequirement(org.miron.dsl.miron.Requirement requirement, String text, JsonNode formula,
+            List<Signal> reads) {
+    }
+
     public final MironModel model;
     /** The model and the MIRoN models it imports (their varpoints and rules are generated too). */
     public final List<MironModel> models = new ArrayList<>();
@@ -36,6 +45,8 @@ public final class AdaptationModel {
     public final WeightPolicy weights;
     public final List<SampledVariationPoint> varpoints = new ArrayList<>();
     public final List<TranslatedRule> rules = new ArrayList<>();
+    /** The requirements of the model itself, in declaration order (an imported model's are its own). */
+    public final List<TranslatedRequirement> requirements = new ArrayList<>();
     public final Set<Property> properties = new LinkedHashSet<>();
     public final Set<Context> contexts = new LinkedHashSet<>();
     /** File name of the woven tree, or null when the model weaves no behaviour tree. */

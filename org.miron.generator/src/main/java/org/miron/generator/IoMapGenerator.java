@@ -128,6 +128,15 @@ public class IoMapGenerator {
         node.put("kind", "context");
         node.put("namespace", Names.namespace(c));
         node.put("name", c.getName());
+        roqmeType(node, type);
+        node.put("param", Names.context(c));
+        node.put("type", ExpressionToMiniZinc.mznType(c));
+        node.put("known", Names.known(c));
+        return node;
+    }
+
+    /** "roqmeType" of a context's type, and its "literals" when it is an enum (also name.requirements.json's). */
+    static void roqmeType(ObjectNode node, DataType type) {
         String roqmeType;
         if (type instanceof BooleanType) {
             roqmeType = "boolean";
@@ -145,16 +154,10 @@ public class IoMapGenerator {
                 literals.add(literal.getName());
             }
         }
-        node.put("param", Names.context(c));
-        node.put("type", ExpressionToMiniZinc.mznType(c));
-        node.put("known", Names.known(c));
-        return node;
     }
 
-    private static ObjectNode varpoint(SampledVariationPoint vp) {
-        ObjectNode node = JSON.objectNode();
-        node.put("name", vp.name);
-        node.put("kind", vp.isEnum() ? "enum" : vp.bool ? "boolean" : "number");
+    /** A varpoint's "values": its labels, false and true, or its numbers (also name.requirements.json's). */
+    static void values(ObjectNode node, SampledVariationPoint vp) {
         ArrayNode values = node.putArray("values");
         if (vp.isEnum()) {
             vp.labels().forEach(values::add);
@@ -163,6 +166,13 @@ public class IoMapGenerator {
         } else {
             vp.values.forEach(v -> values.add(number(v)));
         }
+    }
+
+    private static ObjectNode varpoint(SampledVariationPoint vp) {
+        ObjectNode node = JSON.objectNode();
+        node.put("name", vp.name);
+        node.put("kind", vp.isEnum() ? "enum" : vp.bool ? "boolean" : "number");
+        values(node, vp);
         if (vp.preset < 0) {
             node.putNull("preset");
         } else {
@@ -218,7 +228,7 @@ public class IoMapGenerator {
     }
 
     /** 10, 0.25, -3: no exponent, no trailing zeros (as Numbers.json). */
-    private static BigDecimal number(BigDecimal value) {
+    static BigDecimal number(BigDecimal value) {
         return value.signum() == 0 ? BigDecimal.ZERO : value.stripTrailingZeros();
     }
 }

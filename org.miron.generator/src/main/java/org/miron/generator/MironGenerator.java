@@ -15,7 +15,7 @@ import org.miron.dsl.roqme.RoqmeModel;
 
 /**
  * The MIRoN generator (docs/generators.md) as an Xtext generator: for a validated .miron resource,
- * the woven tree name.ext.xml, name.mzn, name.dzn, name.io.json and the RoQME runtime model
+ * the woven tree name.ext.xml, name.mzn, name.dzn, name.io.json, name.requirements.json (docs/requirements.md) and the RoQME runtime model
  * name.roqme.json (for a .roqme resource only the latter, see RoqmeRuntimeModel), written through any
  * IFileSystemAccess2 (files, platform:/resource, in memory). All or nothing: the files are
  * generated into memory and reach the target only when the model generated without error.
@@ -95,6 +95,7 @@ public class MironGenerator extends AbstractGenerator {
         files.generateFile(name + ".mzn", new MiniZincGenerator().generate(m));
         files.generateFile(name + ".dzn", new DznGenerator().generate(m));
         files.generateFile(name + ".io.json", new IoMapGenerator().generate(m));
+        files.generateFile(name + ".requirements.json", new RequirementsGenerator().generate(m));
         RoqmeRuntimeModel.stage(input, files, errors);
         return new StagedGeneration(files, errors);
     }

@@ -20,6 +20,7 @@ import org.eclipse.xtext.nodemodel.ICompositeNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.miron.dsl.miron.Constraint;
 import org.miron.dsl.miron.MironModel;
+import org.miron.dsl.miron.Requirement;
 import org.miron.dsl.miron.Rule;
 import org.miron.dsl.miron.VariationPoint;
 import org.miron.dsl.roqme.Context;
@@ -68,6 +69,10 @@ public class ModelAnalyser {
             for (Rule rule : filter(each.getSentences(), Rule.class)) {
                 m.rules.add(translate(rule, translator, trees));
             }
+        }
+        RequirementTranslator requirements = new RequirementTranslator(trees, errors);
+        for (Requirement requirement : filter(model.getSentences(), Requirement.class)) {
+            m.requirements.add(requirements.translate(requirement));
         }
         m.varpoints.forEach(vp -> m.properties.addAll(vp.utilities.keySet()));
         m.properties.addAll(translator.properties);

@@ -40,12 +40,13 @@ public class ExamplesGenerationTest {
             Path out = temp.newFolder(base(model)).toPath();
             Toolchain toolchain = new Toolchain();
             assertEquals(model + ": " + toolchain.messages(), 0, toolchain.generate(model.toString(), out.toString()));
-            for (String ext : List.of(".ext.xml", ".mzn", ".dzn", ".io.json")) {
+            for (String ext : List.of(".ext.xml", ".mzn", ".dzn", ".io.json", ".requirements.json")) {
                 assertTrue(model + " did not generate " + ext, Files.isRegularFile(out.resolve(base(model) + ext)));
             }
             Toolchain check = new Toolchain();
             assertEquals(model + ": " + check.messages(), 0, check.check(out.resolve(base(model) + ".ext.xml").toString()));
             JsonSchemaFile.IO_JSON.assertValid(out.resolve(base(model) + ".io.json"));
+            JsonSchemaFile.REQUIREMENTS.assertValid(out.resolve(base(model) + ".requirements.json"));
             MiniZinc mzn = new MiniZinc(out.resolve(base(model) + ".io.json"));
             Map<String, Integer> decisions = mzn.solve(mzn.defaults());
             assertEquals(model + ": one decision per varpoint", mzn.io.get("varpoints").size(), decisions.size());

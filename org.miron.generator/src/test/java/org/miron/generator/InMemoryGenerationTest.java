@@ -103,7 +103,7 @@ public class InMemoryGenerationTest {
         assertEquals(List.of(), model.getErrors());
         new MironGenerator().doGenerate(model, fsa, new GeneratorContext());
 
-        assertEquals(List.of("model.dzn", "model.ext.xml", "model.io.json", "model.mzn", "model.roqme.json"),
+        assertEquals(List.of("model.dzn", "model.ext.xml", "model.io.json", "model.mzn", "model.requirements.json", "model.roqme.json"),
                 fsa.getTextFiles().keySet().stream().map(k -> k.replace(InMemoryFileSystemAccess.DEFAULT_OUTPUT, "")).toList());
         assertTrue(file(fsa, "model.ext.xml").toString().contains("<SubTreePlus ID=\"Extra\"/>"));
         assertTrue(file(fsa, "model.mzn").toString().contains("v_var"));
@@ -165,7 +165,7 @@ public class InMemoryGenerationTest {
                 .getInstance(GeneratorDelegate.class);
         InMemoryFileSystemAccess fsa = new InMemoryFileSystemAccess();
         delegate.generate(models("memory:/", MODEL), fsa, new GeneratorContext());
-        assertEquals(5, fsa.getTextFiles().size()); // with model.roqme.json
+        assertEquals(6, fsa.getTextFiles().size()); // with model.requirements.json and model.roqme.json
         assertEquals("../models/lib/extra.bt", include(file(fsa, "model.ext.xml")));
     }
 

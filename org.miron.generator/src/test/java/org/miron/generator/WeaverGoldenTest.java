@@ -82,6 +82,7 @@ public class WeaverGoldenTest {
         Toolchain toolchain = new Toolchain();
         assertEquals(toolchain.messages(), 0, toolchain.generate(models.resolve(name + ".miron").toString(), out.toString()));
         JsonSchemaFile.IO_JSON.assertValid(out.resolve(name + ".io.json"));
+        JsonSchemaFile.REQUIREMENTS.assertValid(out.resolve(name + ".requirements.json"));
     }
 
     @Test

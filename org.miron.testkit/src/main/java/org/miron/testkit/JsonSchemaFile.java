@@ -23,6 +23,8 @@ import com.networknt.schema.SpecificationVersion;
 public final class JsonSchemaFile {
     /** docs/io-json.schema.json: the generator ⇄ engine contract. */
     public static final JsonSchemaFile IO_JSON = new JsonSchemaFile("docs/io-json.schema.json");
+    /** docs/requirements.schema.json: the generator ⇄ requirement monitor contract. */
+    public static final JsonSchemaFile REQUIREMENTS = new JsonSchemaFile("docs/requirements.schema.json");
     /** docs/roqme-model.schema.json: the RoQME runtime model's contract with the provider. */
     public static final JsonSchemaFile ROQME_MODEL = new JsonSchemaFile("docs/roqme-model.schema.json");
     /** docs/world.schema.json: the structure of a world file for `miron simulate`. */

@@ -21,6 +21,8 @@ import org.miron.dsl.roqme.RoqmeModel;
 import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.scoping.RoqmeScopeProvider;
 import org.miron.dsl.util.Imports;
+import org.miron.dsl.util.Formulas;
+import org.miron.dsl.validation.MironIssueCodes;
 import org.miron.dsl.validation.RoqmeIssueCodes;
 
 import com.google.inject.Inject;
@@ -65,8 +67,10 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
             return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.MISSING_IMPORT, fix.importLine(),
                     fix.reference());
         }
-        return new DiagnosticMessage(message, Severity.ERROR, RoqmeIssueCodes.UNKNOWN_REFERENCE,
-                closest(context, delimiter));
+        // inside a requirement the name is one the monitor cannot read: its own code (docs/issue-codes.md)
+        String code = Formulas.requirementOf(context.getContext()) != null ? MironIssueCodes.REQUIREMENT_UNKNOWN_NAME
+                : RoqmeIssueCodes.UNKNOWN_REFERENCE;
+        return new DiagnosticMessage(message, Severity.ERROR, code, closest(context, delimiter));
     }
 
     /** The visible names a reference could take, closest to the text written (for "did you mean"). */
@@ -172,6 +176,8 @@ public class DslLinkingDiagnosticMessageProvider extends LinkingDiagnosticMessag
             return "varpoint";
         } else if ("Rule".equals(type.getName())) {
             return "rule";
+        } else if ("Requirement".equals(type.getName())) {
+            return "requirement";
         }
         return "variable";
     }

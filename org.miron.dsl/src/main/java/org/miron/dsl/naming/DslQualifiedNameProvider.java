@@ -37,6 +37,8 @@ public class DslQualifiedNameProvider extends IQualifiedNameProvider.AbstractImp
             return ((Observation) obj).getName();
         } else if (obj instanceof Rule) {
             return ((Rule) obj).getName();
+        } else if (obj instanceof org.miron.dsl.miron.Requirement) {
+            return ((org.miron.dsl.miron.Requirement) obj).getName();
         }
         return null;
     }

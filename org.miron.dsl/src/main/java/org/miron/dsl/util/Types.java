@@ -99,13 +99,14 @@ public final class Types {
             default:
                 return ExprType.BOOLEAN;
             }
-        } else if (e instanceof WhileExpression || e instanceof RepeatExpression || e instanceof RangeExpression) {
+        } else if (e instanceof WhileExpression || e instanceof RepeatExpression || e instanceof RangeExpression
+                || e instanceof org.miron.dsl.miron.TemporalExpression || e instanceof org.miron.dsl.miron.Implication) {
             return ExprType.BOOLEAN;
         } else if (e instanceof ConditionalExpression) {
             return typeOf(((ConditionalExpression) e).getIfTrue());
         } else if (e instanceof FunctionCall) {
             FunctionCall f = (FunctionCall) e;
-            String fn = f.getFunction();
+            String fn = f.getFunction() == null ? "" : f.getFunction(); // null in a half-parsed x'
             if (NUMERIC_FUNCTIONS.contains(fn)) {
                 return ExprType.NUMBER;
             } else if (BOOLEAN_FUNCTIONS.contains(fn)) {

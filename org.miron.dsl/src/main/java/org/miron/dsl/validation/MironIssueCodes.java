@@ -70,4 +70,23 @@ public final class MironIssueCodes {
     public static final String VALUE_OUT_OF_RANGE = "miron.value-out-of-range";
     /** varpoint = value in a consequence, with a value off the varpoint's precision grid. */
     public static final String VALUE_OFF_GRID = "miron.value-off-grid";
+
+    // ------------------------------------------------------------------ requirements (docs/requirements.md)
+
+    /** A state formula of a requirement that is not boolean. */
+    public static final String REQUIREMENT_TYPE = "miron.requirement-type";
+    /** A name inside a requirement that denotes nothing visible (a linking error). Data: the closest names. */
+    public static final String REQUIREMENT_UNKNOWN_NAME = "miron.requirement-unknown-name";
+    /** A temporal bound ({@code within t}) that is not positive. */
+    public static final String REQUIREMENT_BOUND = "miron.requirement-bound";
+    /** {@code with probability >= p} with p outside (0, 1). */
+    public static final String REQUIREMENT_PROBABILITY = "miron.requirement-probability";
+    /** A pattern, window function or belief in a requirement. */
+    public static final String REQUIREMENT_PATTERN = "miron.requirement-pattern";
+    /** A temporal operator or {@code implies} outside a requirement. */
+    public static final String REQUIREMENT_TEMPORAL_OUTSIDE = "miron.requirement-temporal-outside";
+    /** A requirement no run can violate given the declared ranges (warning). */
+    public static final String REQUIREMENT_TRIVIAL = "miron.requirement-trivial";
+    /** A requirement no run can meet given the declared ranges (warning). */
+    public static final String REQUIREMENT_UNSATISFIABLE = "miron.requirement-unsatisfiable";
 }

@@ -13,6 +13,7 @@ import org.eclipse.xtext.validation.CheckType;
 import org.eclipse.xtext.validation.ComposedChecks;
 import org.miron.dsl.miron.MironModel;
 import org.miron.dsl.miron.MironPackage;
+import org.miron.dsl.miron.Requirement;
 import org.miron.dsl.miron.Rule;
 import org.miron.dsl.roqme.Import;
 import org.miron.dsl.roqme.RoqmeModel;
@@ -23,7 +24,8 @@ import org.miron.dsl.util.Imports;
  * .bt/.roqme/.miron files with distinct aliases here; varpoint types, bindings and rules in the
  * composed check sets.
  */
-@ComposedChecks(validators = { VariationPointTypeChecks.class, BindingChecks.class, RuleChecks.class })
+@ComposedChecks(validators = { VariationPointTypeChecks.class, BindingChecks.class, RuleChecks.class,
+        RequirementChecks.class })
 public class MironValidator extends AbstractMironValidator {
 
     private static final MironPackage M = MironPackage.eINSTANCE;
@@ -45,14 +47,15 @@ public class MironValidator extends AbstractMironValidator {
 
     /**
      * Rules that can apply together and cannot hold together, rules that never apply, rules always
-     * overridden (docs/issue-codes.md): warnings on the rules of this file, only when the file has
+     * overridden, requirements that can never be violated or never be met (docs/issue-codes.md):
+     * warnings on the rules and requirements of this file, only when the file has
      * no syntax error (the analysis itself skips models the generators would refuse). Expensive
      * (up to its 1 s budget): `miron check` and the language server run it, `miron generate` does not.
      */
     @Check(CheckType.EXPENSIVE)
     public void checkRuleInteractions(MironModel model) {
         if (RULE_ANALYSES.isEmpty() || model.eResource() == null || !model.eResource().getErrors().isEmpty()
-                || model.getSentences().stream().noneMatch(s -> s instanceof Rule)) {
+                || model.getSentences().stream().noneMatch(s -> s instanceof Rule || s instanceof Requirement)) {
             return;
         }
         for (RuleAnalysis analysis : RULE_ANALYSES) {

@@ -272,20 +272,21 @@ public class EquinoxTest {
     }
 
     @Test
-    public void generateCommandWritesTheFiveFilesThroughTheServer() throws Exception {
+    public void generateCommandWritesTheSixFilesThroughTheServer() throws Exception {
         String broken = Files.readString(example("intralogistics.miron")).replaceFirst("import", "imprt");
         List<String> result = call("generateThroughCommand", example("intralogistics.miron").getParent().toString(), broken);
-        // Five files in generated/ (tree, mzn, dzn, io.json, roqme.json), refreshed into the
-        // workspace; then the broken copy's status.
-        assertEquals(result.toString(), 6, result.size());
-        assertTrue(result.toString(), result.subList(0, 5).stream().anyMatch(f -> f.endsWith(".io.json")));
-        assertTrue(result.toString(), result.subList(0, 5).stream().anyMatch(f -> f.endsWith(".mzn")));
-        assertTrue(result.toString(), result.subList(0, 5).stream().anyMatch(f -> f.endsWith(".roqme.json")));
-        assertTrue(result.get(5), result.get(5).startsWith("ERROR Not generated: broken.miron has"));
+        // Six files in generated/ (tree, mzn, dzn, io.json, requirements.json, roqme.json), refreshed
+        // into the workspace; then the broken copy's status.
+        assertEquals(result.toString(), 7, result.size());
+        assertTrue(result.toString(), result.subList(0, 6).stream().anyMatch(f -> f.endsWith(".io.json")));
+        assertTrue(result.toString(), result.subList(0, 6).stream().anyMatch(f -> f.endsWith(".mzn")));
+        assertTrue(result.toString(), result.subList(0, 6).stream().anyMatch(f -> f.endsWith(".requirements.json")));
+        assertTrue(result.toString(), result.subList(0, 6).stream().anyMatch(f -> f.endsWith(".roqme.json")));
+        assertTrue(result.get(6), result.get(6).startsWith("ERROR Not generated: broken.miron has"));
     }
 
     @Test
-    public void theGeneratorWritesTheFiveFiles() throws Exception {
+    public void theGeneratorWritesTheSixFiles() throws Exception {
         Path out = tmp.newFolder("generated").toPath();
         List<String> result = call("generate", List.of(example("intralogistics.miron").toString()), out.toString());
         assertEquals(result.toString(), "WRITTEN", result.get(0));
@@ -294,7 +295,7 @@ public class EquinoxTest {
             list.forEach(p -> files.add(p.getFileName().toString()));
         }
         assertEquals(files.toString(), Set.of("intralogistics.ext.xml", "intralogistics.mzn", "intralogistics.dzn",
-                "intralogistics.io.json", "intralogistics.roqme.json"), files);
+                "intralogistics.io.json", "intralogistics.requirements.json", "intralogistics.roqme.json"), files);
         for (String f : files) {
             assertTrue(f, Files.size(out.resolve(f)) > 0);
         }

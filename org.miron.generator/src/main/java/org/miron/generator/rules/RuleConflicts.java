@@ -48,16 +48,10 @@ public final class RuleConflicts {
         this.m = m;
         this.budgetNanos = budgetMillis * 1_000_000L;
         this.rules = m.rules;
-        Map<String, double[]> values = new HashMap<>();
         for (SampledVariationPoint vp : m.varpoints) {
-            double[] v = new double[vp.size()];
-            for (int i = 0; i < v.length; i++) {
-                v[i] = vp.isEnum() ? i : vp.values.get(i).doubleValue();
-            }
-            values.put(vp.name, v);
             sizes.put(vp.name, vp.size());
         }
-        eval = new TreeEvaluator(values);
+        eval = TreeEvaluator.of(m.varpoints);
         conditionReadsVarpoints = new boolean[rules.size()];
         for (int r = 0; r < rules.size(); r++) {
             AdaptationModel.TranslatedRule rule = rules.get(r);

@@ -3,11 +3,13 @@ package org.miron.generator.rules;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeSet;
 import org.miron.dsl.roqme.BooleanType;
+import org.miron.dsl.roqme.BoundedType;
 import org.miron.dsl.roqme.Context;
 import org.miron.dsl.roqme.DataType;
 import org.miron.dsl.roqme.EnumType;
@@ -20,7 +22,8 @@ import org.miron.generator.Names;
 /**
  * The situations the rule check tries: per input a rule reads, one value per interval its
  * thresholds (the constants the rules compare it with) cut — just below the first, each threshold,
- * midway between two, just above the last; a metric stays in [0,1] — every literal of an enum, both
+ * midway between two, just above the last; a metric stays in [0,1], a number context in its declared
+ * range (lo:hi) — every literal of an enum, both
  * Booleans; all combinations, numbered in
  * mixed radix. Contexts are known (a rule over an unknown context does not apply). Also describes
  * a situation in the model's terms, an input by the interval of its thresholds it lies in.
@@ -37,24 +40,38 @@ final class Situations {
     private final Map<String, Double> known = new LinkedHashMap<>();
 
     Situations(AdaptationModel m) {
-        Map<String, TreeSet<Double>> thresholds = new LinkedHashMap<>();
+        this(trees(m), m.properties, m.contexts);
+    }
+
+    private static List<JsonNode> trees(AdaptationModel m) {
+        List<JsonNode> trees = new ArrayList<>();
         for (AdaptationModel.TranslatedRule r : m.rules) {
-            collect(r.conditionTree(), thresholds);
-            r.consequences().forEach(c -> collect(c.tree(), thresholds));
+            trees.add(r.conditionTree());
+            r.consequences().forEach(c -> trees.add(c.tree()));
         }
-        for (Property p : m.properties) {
+        return trees;
+    }
+
+    /**
+     * The situations of the inputs these trees read, among these properties and contexts. A
+     * number context's values stay in its declared range (lo:hi), as a metric's stay in [0,1]: a
+     * condition beyond the range is false in every situation, as at run time.
+     */
+    Situations(List<JsonNode> trees, Collection<Property> properties, Collection<Context> contexts) {
+        Map<String, TreeSet<Double>> thresholds = new LinkedHashMap<>();
+        trees.forEach(t -> collect(t, thresholds));
+        for (Property p : properties) {
             String param = Names.metric(p);
             if (thresholds.containsKey(param)) {
                 TreeSet<Double> t = thresholds.get(param);
-                TreeSet<Double> points = new TreeSet<>(); // an estimate is in [0,1]: each interval's point clamped into it
-                numbers(t).forEach(x -> points.add(Math.min(1, Math.max(0, x))));
+                TreeSet<Double> points = clamped(numbers(t), 0.0, 1.0); // an estimate is in [0,1]
                 if (points.isEmpty()) {
                     points.add(0.5);
                 }
                 inputs.add(new Input(param, p.getName(), array(points), array(t), null, false));
             }
         }
-        for (Context c : m.contexts) {
+        for (Context c : contexts) {
             String param = Names.context(c);
             known.put(Names.known(c), 1.0);
             if (!thresholds.containsKey(param)) {
@@ -72,13 +89,25 @@ final class Situations {
                 inputs.add(new Input(param, c.getName(), new double[] {0, 1}, new double[0], null, true));
             } else {
                 TreeSet<Double> t = thresholds.get(param);
-                TreeSet<Double> points = numbers(t);
+                BoundedType range = type instanceof BoundedType b ? b : null;
+                Double lo = range == null ? null : range.getLower();
+                Double hi = range == null ? null : range.getUpper();
+                TreeSet<Double> points = clamped(numbers(t), lo, hi);
                 if (points.isEmpty()) {
-                    points.add(0.0);
+                    points.add(lo != null ? lo : hi != null ? Math.min(0.0, hi) : 0.0);
                 }
                 inputs.add(new Input(param, c.getName(), array(points), array(t), null, false));
             }
         }
+    }
+
+    /** Each point moved into [lo, hi] (an open end null): a point past an end stands for that end. */
+    private static TreeSet<Double> clamped(TreeSet<Double> points, Double lo, Double hi) {
+        TreeSet<Double> in = new TreeSet<>();
+        for (double x : points) {
+            in.add(Math.min(hi == null ? x : hi, Math.max(lo == null ? x : lo, x)));
+        }
+        return in;
     }
 
     /** Constants compared with each parameter, directly ({@code p < 0.3}); other parameters get an empty set. */

@@ -18,6 +18,19 @@ final class TreeEvaluator {
         this.values = values;
     }
 
+    /** The evaluator of these varpoints' values (an enum's values are its indexes). */
+    static TreeEvaluator of(java.util.List<org.miron.generator.SampledVariationPoint> varpoints) {
+        Map<String, double[]> values = new java.util.HashMap<>();
+        for (org.miron.generator.SampledVariationPoint vp : varpoints) {
+            double[] v = new double[vp.size()];
+            for (int i = 0; i < v.length; i++) {
+                v[i] = vp.isEnum() ? i : vp.values.get(i).doubleValue();
+            }
+            values.put(vp.name, v);
+        }
+        return new TreeEvaluator(values);
+    }
+
     boolean holds(JsonNode n, Map<String, Double> inputs, Map<String, Integer> assign) {
         return eval(n, inputs, assign) == 1;
     }

@@ -82,6 +82,22 @@ public class CompletionLspTest {
     }
 
     @Test
+    public void requirementKeywordsAndNames() throws Exception {
+        String text = example("intralogistics.miron") + "\nrequirement r2 : always (roqme.safety < 0.3 implies "
+                + "eventually within 5 seconds task = task::dock) with probability >= 0.9\n";
+        assertHas(complete("intralogistics.miron", text, "r2 : "), "always", "never", "eventually", "roqme",
+                "roqme.BatteryLevel", "maxVelocity");
+        // the same names after the alias as in a rule
+        List<String> afterAlias = complete("intralogistics.miron", text, "r2 : always (roqme.");
+        assertHas(afterAlias, "roqme.BatteryLevel", "roqme.safety", "roqme.Docked");
+        assertHas(complete("intralogistics.miron", text, "implies eventually "), "within");
+        assertHas(complete("intralogistics.miron", text, "task = task::dock) "), "with", "implies");
+        assertHas(complete("intralogistics.miron", text, "task::dock) with "), "probability");
+        assertHas(complete("intralogistics.miron", text, "with probability "), ">=");
+        assertHas(complete("intralogistics.miron", text, "with probability >= 0.9\n"), "requirement", "rule");
+    }
+
+    @Test
     public void proposalsCarryTheDocumentationComment() throws Exception {
         String text = example("intralogistics.miron");
         Path path = workspace.resolve("intralogistics.miron");

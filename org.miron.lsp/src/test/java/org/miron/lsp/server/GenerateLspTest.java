@@ -37,11 +37,11 @@ public class GenerateLspTest {
         assertTrue(result.toString(), result.get("ok").getAsBoolean());
         Path generated = session.workspace.resolve("generated");
         for (String name : List.of("intralogistics.ext.xml", "intralogistics.mzn", "intralogistics.dzn", "intralogistics.io.json",
-                "intralogistics.roqme.json")) {
+                "intralogistics.requirements.json", "intralogistics.roqme.json")) {
             assertTrue(name, Files.isRegularFile(generated.resolve(name)));
             assertTrue(result.toString(), result.get("written").toString().contains(name));
         }
-        assertTrue(result.get("message").getAsString(), result.get("message").getAsString().startsWith("Generated 5 files"));
+        assertTrue(result.get("message").getAsString(), result.get("message").getAsString().startsWith("Generated 6 files"));
     }
 
     @Test

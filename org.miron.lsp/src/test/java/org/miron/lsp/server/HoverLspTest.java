@@ -68,4 +68,19 @@ public class HoverLspTest {
         String count = hover(roqme, text, ":= cou");
         assertTrue(count, count.contains("count(") && count.contains("window"));
     }
+
+    @Test
+    public void requirementsAndTheirTemporalOperators() throws Exception {
+        Path miron = session.workspace.resolve("intralogistics.miron");
+        String text = Files.readString(miron);
+        String requirement = hover(miron, text, "requirement rarelySt");
+        assertTrue(requirement, requirement.contains("**requirement rarelyStranded**: `never (roqme.BatteryLevel < 1 and "
+                + "not roqme.Docked)`") && requirement.contains("with probability at least 0.9"));
+        String every = hover(miron, text, "requirement neverStranded : nev");
+        assertTrue(every, every.startsWith("never φ: φ holds at no instant of the run"));
+        String bounded = hover(miron, text, "implies eventu");
+        assertTrue(bounded, bounded.startsWith("eventually within 5 seconds φ: φ holds at some instant before 5 seconds"));
+        String always = hover(miron, text, "requirement slowNearPeople : alw");
+        assertTrue(always, always.startsWith("always φ: φ holds at every instant of the run"));
+    }
 }

@@ -160,6 +160,10 @@ public class NavigationLspTest {
         java.util.Map<String, org.eclipse.lsp4j.SymbolKind> kinds = kinds(mironUri);
         assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Field, kinds.get("task"));
         assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Method, kinds.get("noBattery"));
+        // requirements are listed as rules are, with a kind of their own
+        assertTrue(names.toString(), names.containsAll(List.of("docksOnLowBattery", "neverStranded", "slowNearPeople",
+                "rarelyStranded")));
+        assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.Interface, kinds.get("docksOnLowBattery"));
         assertEquals(kinds.toString(), org.eclipse.lsp4j.SymbolKind.EnumMember, kinds.get("dock"));
         Path roqme = workspace.resolve("intralogistics.roqme");
         String roqmeUri = client.open(roqme, Files.readString(roqme));

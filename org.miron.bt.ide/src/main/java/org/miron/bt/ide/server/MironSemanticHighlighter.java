@@ -39,7 +39,8 @@ public class MironSemanticHighlighter implements ISemanticHighlightingCalculator
             Map.entry("roqme.Param", "parameter"), Map.entry("roqme.Timer", "event"),
             Map.entry("roqme.Observation", "event"), Map.entry("roqme.EnumLiteral", "enumMember"),
             Map.entry("roqme.TypeDefinition", "type"), Map.entry("miron.VariationPoint", "variable"),
-            Map.entry("miron.BehaviorTreeLiteral", "enumMember"), Map.entry("miron.Rule", "function"));
+            Map.entry("miron.BehaviorTreeLiteral", "enumMember"), Map.entry("miron.Rule", "function"),
+            Map.entry("miron.Requirement", "function"));
 
     @Override
     public void provideHighlightingFor(XtextResource resource, IHighlightedPositionAcceptor acceptor,

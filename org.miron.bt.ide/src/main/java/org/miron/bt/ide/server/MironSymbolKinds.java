@@ -38,13 +38,15 @@ public class MironSymbolKinds extends DocumentSymbolKindProvider {
             Map.entry("roqme.BeliefVariable", SymbolKind.Variable),
             Map.entry("roqme.Property", SymbolKind.Property),
             Map.entry("roqme.Observation", SymbolKind.Event),
-            // MIRoN: variation points, their values and the rules that choose them.
+            // MIRoN: variation points, their values, the rules that choose them and the requirements.
             Map.entry("miron.MironModel", SymbolKind.Namespace),
             Map.entry("miron.Import", SymbolKind.File),
             Map.entry("miron.VariationPoint", SymbolKind.Field),
             Map.entry("miron.BehaviorTreeLiteral", SymbolKind.EnumMember),
             Map.entry("miron.SampleValue", SymbolKind.Constant),
-            Map.entry("miron.Rule", SymbolKind.Method));
+            Map.entry("miron.Rule", SymbolKind.Method),
+            // a requirement is a contract the running robot is held to
+            Map.entry("miron.Requirement", SymbolKind.Interface));
 
     @Override
     protected SymbolKind getSymbolKind(EClass type) {

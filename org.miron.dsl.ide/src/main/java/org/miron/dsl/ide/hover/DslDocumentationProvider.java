@@ -12,6 +12,8 @@ import org.miron.bt.ide.hover.BtDocumentationProvider;
 import org.miron.dsl.miron.BehaviorTreeEnumType;
 import org.miron.dsl.miron.MironPackage;
 import org.miron.dsl.miron.NumericSampledType;
+import org.miron.dsl.miron.Requirement;
+import org.miron.dsl.miron.TemporalExpression;
 import org.miron.dsl.miron.VariationPoint;
 import org.miron.dsl.roqme.BeliefVariable;
 import org.miron.dsl.roqme.DocumentableElement;
@@ -39,7 +41,11 @@ public class DslDocumentationProvider implements IEObjectDocumentationProvider {
         if (element instanceof FunctionCall call && RoqmeFunctions.describe(call.getFunction()) != null) {
             parts.add(RoqmeFunctions.describe(call.getFunction()));
         }
-        if (element instanceof VariationPoint varpoint) {
+        if (element instanceof TemporalExpression temporal) {
+            parts.add(TemporalOperators.describe(temporal)); // the keyword's meaning, not the whole formula
+        } else if (element instanceof Requirement requirement) {
+            parts.add(TemporalOperators.describe(requirement));
+        } else if (element instanceof VariationPoint varpoint) {
             parts.add(values(varpoint));
         } else if (element.eClass().getEPackage() == RoqmePackage.eINSTANCE
                 || element.eClass().getEPackage() == MironPackage.eINSTANCE) {

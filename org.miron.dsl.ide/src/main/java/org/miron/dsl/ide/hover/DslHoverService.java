@@ -7,11 +7,13 @@ import org.eclipse.xtext.ide.server.hover.HoverService;
 import org.eclipse.xtext.nodemodel.ILeafNode;
 import org.eclipse.xtext.nodemodel.util.NodeModelUtils;
 import org.eclipse.xtext.resource.XtextResource;
+import org.miron.dsl.miron.TemporalExpression;
 import org.miron.dsl.roqme.FunctionCall;
 
 /**
- * Xtext's hover, also over a function's name ({@code count(...)}, {@code x'avg}): Xtext hovers
- * only names of elements and references, and a call has no name.
+ * Xtext's hover, also over a function's name ({@code count(...)}, {@code x'avg}) and a temporal
+ * operator ({@code always}, {@code eventually within ...}): Xtext hovers only names of elements and
+ * references, and neither has a name.
  */
 public class DslHoverService extends HoverService {
 
@@ -24,7 +26,9 @@ public class DslHoverService extends HoverService {
         }
         ILeafNode leaf = NodeModelUtils.findLeafNodeAtOffset(resource.getParseResult().getRootNode(), offset);
         EObject element = leaf == null ? null : NodeModelUtils.findActualSemanticObjectFor(leaf);
-        if (element instanceof FunctionCall call && leaf.getText().equals(call.getFunction())) {
+        if (element instanceof FunctionCall call && leaf.getText().equals(call.getFunction())
+                || element instanceof TemporalExpression temporal && temporal.getOperator() != null
+                        && leaf.getText().equals(temporal.getOperator().getLiteral())) {
             return new HoverContext(document, resource, offset, leaf.getTextRegion(), element);
         }
         return context;
