@@ -12,6 +12,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import org.miron.cli.demo.Demo;
+import org.miron.cli.demo.DemoRequirements;
 import org.miron.cli.demo.ScenarioInputs;
 import org.miron.generator.RoqmeRuntimeModel;
 import org.miron.runtime.bus.Topics;
@@ -24,6 +25,7 @@ import org.miron.runtime.roqme.model.RoqmeModel;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.player.Scenario;
+import org.miron.runtime.requirement.RequirementModel;
 import org.miron.runtime.skill.SkillTable;
 import org.miron.runtime.sim.Durations;
 import org.miron.runtime.sim.LiveWorld;
@@ -210,6 +212,12 @@ public class DemoCommand implements Callable<Integer> {
         } catch (IOException | RuntimeException e) {
             return usage("miron demo: error: " + e.getMessage());
         }
+        RequirementModel requirements;
+        try {
+            requirements = DemoRequirements.load(generated, name);
+        } catch (IllegalArgumentException e) {
+            return usage("miron demo: error: " + e.getMessage());
+        }
         Endpoints endpoints = Endpoints.freeLoopback();
         LiveWorld liveWorld = null;
         if (worldFile != null) {
@@ -232,12 +240,17 @@ public class DemoCommand implements Callable<Integer> {
                         : " start; the skills act on " + home.toAbsolutePath().normalize().relativize(worldFile.toAbsolutePath().normalize())
                                 + ", which publishes the robot's contexts (closed loop) for " + duration + " of world time, about "
                                 + Math.round(worldMs * timeScale / 1000.0) + " s."));
+        if (requirements != null) {
+            console.println("MIRoN demo: the requirement monitors check " + requirements.requirements().size()
+                    + " requirements of " + modelFile.getFileName() + " beside the engine, on "
+                    + (worldFile != null ? "world" : "scenario") + " time.");
+        }
         console.println("    time  who     what");
         Demo.Result result;
         try {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
                     out, endpoints, console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
-                    .world(liveWorld, worldMs)
+                    .world(liveWorld, worldMs).requirements(requirements)
                     .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());

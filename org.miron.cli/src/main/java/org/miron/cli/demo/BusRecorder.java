@@ -19,7 +19,7 @@ public final class BusRecorder implements AutoCloseable {
         private final String topic;
         private final JsonNode body;
 
-        Event(long at, String topic, JsonNode body) {
+        public Event(long at, String topic, JsonNode body) {
             this.at = at;
             this.topic = topic;
             this.body = body;

@@ -16,7 +16,10 @@ import org.miron.runtime.engine.Engine;
 import org.miron.runtime.engine.EngineOptions;
 import org.miron.runtime.engine.EngineStartException;
 import org.miron.runtime.live.LiveExecutor;
+import org.miron.runtime.bus.Topics;
 import org.miron.runtime.player.Scenario;
+import org.miron.runtime.requirement.RequirementModel;
+import org.miron.runtime.requirement.RequirementResult;
 import org.miron.runtime.player.ScenarioPlayer;
 import org.miron.runtime.roqme.LiveProvider;
 import org.miron.runtime.roqme.expr.CompiledModel;
@@ -38,7 +41,7 @@ import org.miron.runtime.sim.LiveWorld;
 public final class Demo {
     /** What a run produced. */
     public record Result(int adaptations, int parameterChanges, int missions, Path report, Path decisionLog,
-            List<com.fasterxml.jackson.databind.JsonNode> skillsPushed) {
+            List<com.fasterxml.jackson.databind.JsonNode> skillsPushed, List<RequirementResult> requirements) {
     }
 
     private final Path ioJson;
@@ -58,6 +61,7 @@ public final class Demo {
     private Path btcppRunner;
     private LiveWorld world;
     private long worldMs;
+    private RequirementModel requirements;
 
     public Demo(Path ioJson, Path tree, Scenario scenario, SkillTable skills, Path outDir, Endpoints endpoints,
             PrintWriter out) {
@@ -93,6 +97,15 @@ public final class Demo {
     public Demo provider(CompiledModel model, long periodMs) {
         this.roqme = model;
         this.periodMs = periodMs;
+        return this;
+    }
+
+    /**
+     * Checks these requirements live beside the engine (null: none), on world time: each event is
+     * told as it happens, each verdict at the end, and the report shows the violations.
+     */
+    public Demo requirements(RequirementModel model) {
+        this.requirements = model;
         return this;
     }
 
@@ -144,11 +157,20 @@ public final class Demo {
                     .start();
                     ScenarioPlayer player = world != null ? null : new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
                 narrator.setClock(recorder);
-                int missionCount = btcppRunner != null
-                        ? runOnBtcpp(engine, provider, narrator, recorder, player)
-                        : runOnJava(engine, provider, narrator, recorder, player);
+                int missionCount;
+                List<RequirementResult> verdicts = List.of();
+                try (DemoRequirements checks = requirements == null ? null
+                        : DemoRequirements.start(requirements, endpoints, recorder, timeScale, narrator)) {
+                    missionCount = btcppRunner != null
+                            ? runOnBtcpp(engine, provider, narrator, recorder, player)
+                            : runOnJava(engine, provider, narrator, recorder, player);
+                    if (checks != null) {
+                        verdicts = checks.finish();
+                        awaitFinalStatus(recorder);
+                    }
+                }
                 TimelineReport timeline = new TimelineReport("MIRoN demo: " + engine.model().model(), recorder.events(),
-                        recorder.elapsed(), names);
+                        recorder.elapsed(), names).requirementTimeScale(timeScale);
                 TreeSnapshots trees = TreeSnapshots.of(tree, ioJson);
                 if (trees != null) {
                     timeline.section(trees.html(recorder.events()));
@@ -161,8 +183,17 @@ public final class Demo {
                 int adaptations = (int) recorder.events().stream().filter(e -> e.topic().equals("miron.decision"))
                         .mapToLong(e -> e.body().path("changed").size()).sum();
                 return new Result(adaptations, skillInterface.history().size(), missionCount, report, decisionLog,
-                        skillInterface.pushed());
+                        skillInterface.pushed(), verdicts);
             }
+        }
+    }
+
+    /** The report reads the requirement events from the recorder: wait (2 s at most) until their last one came. */
+    private static void awaitFinalStatus(BusRecorder recorder) throws InterruptedException {
+        long end = System.currentTimeMillis() + 2000;
+        while (System.currentTimeMillis() < end && recorder.events().stream().noneMatch(e -> e.topic()
+                .equals(Topics.REQUIREMENT_STATUS) && e.body().path("state").asText().equals("finished"))) {
+            Thread.sleep(20);
         }
     }
 

@@ -20,8 +20,8 @@ import org.miron.runtime.bus.Topics;
  * adaptation with the inputs the engine saw when it made it.
  */
 public final class TimelineReport {
-    private static final int WIDTH = 960;
-    private static final int LEFT = 150;
+    static final int WIDTH = 960;
+    static final int LEFT = 150;
     private static final int RIGHT = 20;
     private static final String[] COLORS = { "#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
             "#e377c2", "#17becf" };
@@ -31,6 +31,8 @@ public final class TimelineReport {
     }
 
     private final String title;
+    /** The window drawn, in ms of the events' time axis: [from, end]. */
+    private final long from;
     private final long end;
     private final Map<String, List<Point>> metrics = new LinkedHashMap<>();
     private final Map<String, List<Point>> contexts = new LinkedHashMap<>();
@@ -43,6 +45,11 @@ public final class TimelineReport {
     /** Event contexts (eventtype) by name: when each occurred. */
     private final Map<String, List<Long>> eventContexts = new LinkedHashMap<>();
 
+    /** miron.requirement events and the last miron.requirement.status (RequirementLane). */
+    private final List<BusRecorder.Event> requirementEvents = new ArrayList<>();
+    private JsonNode requirementStatus;
+    private double requirementTimeScale = 1.0;
+
     /** More sections, after the decisions: the tree pictures, the skills. */
     private final List<String> sections = new ArrayList<>();
     private final ModelNames names;
@@ -53,13 +60,31 @@ public final class TimelineReport {
 
     /** A report naming the inputs as the model does ({@code roqme.safety}). */
     public TimelineReport(String title, List<BusRecorder.Event> events, long end, ModelNames names) {
+        this(title, events, 0, end, names, false);
+    }
+
+    /**
+     * A report of the window {@code [fromMs, endMs]} only (axis labels in absolute seconds, curves
+     * and lanes clipped to it, the adaptations in it): a counterexample's timeline around its violation.
+     */
+    public TimelineReport(String title, List<BusRecorder.Event> events, long fromMs, long endMs, ModelNames names) {
+        this(title, events, fromMs, endMs, names, true);
+    }
+
+    private TimelineReport(String title, List<BusRecorder.Event> events, long fromMs, long endMs, ModelNames names,
+            boolean window) {
         this.title = title;
         this.names = names;
-        this.end = Math.max(1, end);
+        this.from = Math.max(0, fromMs);
+        this.end = Math.max(this.from + 1, endMs);
         Map<String, String> applied = new LinkedHashMap<>();
         for (BusRecorder.Event e : events) {
             JsonNode body = e.body();
-            if (e.topic().equals(Topics.ESTIMATE)) {
+            if (e.topic().equals(Topics.REQUIREMENT)) {
+                requirementEvents.add(e);
+            } else if (e.topic().equals(Topics.REQUIREMENT_STATUS)) {
+                requirementStatus = body;
+            } else if (e.topic().equals(Topics.ESTIMATE)) {
                 add(metrics, body.path("name").asText(), e.at(), body.path("value"));
             } else if (e.topic().equals(Topics.OBSERVATION)) {
                 String name = body.path("name").asText();
@@ -74,14 +99,71 @@ public final class TimelineReport {
                 for (JsonNode changed : body.path("changed")) {
                     String vp = changed.asText();
                     String now = body.path("decisions").path(vp).asText();
-                    adaptations.add(new String[] { seconds(e.at()), vp, applied.getOrDefault(vp, "(start)"), now,
-                            body.path("why").path(vp).path("because").asText(""), inputsOf(body.path("inputs"), names) });
+                    if (!window || inWindow(e.at())) {
+                        adaptations.add(new String[] { seconds(e.at()), vp, applied.getOrDefault(vp, "(start)"), now,
+                                body.path("why").path(vp).path("because").asText(""), inputsOf(body.path("inputs"), names) });
+                    }
                     applied.put(vp, now);
                 }
             } else if (e.topic().equals(Topics.STATUS) && body.path("state").asText().equals("degraded")) {
                 problems.add(e.at());
             }
         }
+        if (window) {
+            clip();
+        }
+    }
+
+    long from() {
+        return from;
+    }
+
+    long end() {
+        return end;
+    }
+
+    boolean inWindow(long at) {
+        return at >= from && at <= end;
+    }
+
+    /** Keeps what lies in the window; a series' value at its start is the last one before it. */
+    private void clip() {
+        for (Map<String, List<Point>> series : List.of(metrics, contexts, decisions)) {
+            series.replaceAll((name, points) -> clipped(points));
+            series.values().removeIf(List::isEmpty);
+        }
+        for (Map<String, List<Long>> dots : List.of(observations, eventContexts)) {
+            dots.values().forEach(times -> times.removeIf(t -> !inWindow(t)));
+            dots.values().removeIf(List::isEmpty);
+        }
+        observationEffects.keySet().retainAll(observations.keySet());
+        problems.removeIf(t -> !inWindow(t));
+    }
+
+    private List<Point> clipped(List<Point> points) {
+        List<Point> out = new ArrayList<>();
+        Point before = null;
+        for (Point p : points) {
+            if (p.at() < from) {
+                before = p;
+            } else if (p.at() <= end) {
+                out.add(p);
+            }
+        }
+        if (before != null && (out.isEmpty() || out.get(0).at() > from)) {
+            out.add(0, new Point(from, before.value()));
+        }
+        return out;
+    }
+
+    /**
+     * The requirement events' times are in seconds of the monitors' clock; the axis is the events'
+     * ({@code at}). The demo's monitors run on world time, its axis is wall time: {@code scale} is
+     * its time scale (wall ms per world ms). Default 1.
+     */
+    public TimelineReport requirementTimeScale(double scale) {
+        this.requirementTimeScale = scale;
+        return this;
     }
 
     private static void add(Map<String, List<Point>> series, String name, long at, JsonNode value) {
@@ -144,7 +226,8 @@ public final class TimelineReport {
         StringBuilder out = new StringBuilder();
         out.append(pageHead(title, "figure{margin:1em 0;overflow-x:auto}figcaption{font-weight:bold;margin-bottom:.3em}"))
                 .append("<h1>").append(escape(title)).append("</h1>\n<p>").append(adaptations.size())
-                .append(" adaptations in ").append(seconds(end)).append(" s")
+                .append(" adaptations ").append(from == 0 ? "in " + seconds(end) : "from " + seconds(from) + " s to " + seconds(end))
+                .append(" s")
                 .append(problems.isEmpty() ? "" : ", " + problems.size() + " solver problems (red marks)").append(".</p>\n");
         out.append("<h2>QoS metrics</h2>\n<p>The estimates the engine received; a dotted line marks a fired "
                 + "observation.</p>\n").append(lineChart(metrics, 0, 1));
@@ -163,6 +246,9 @@ public final class TimelineReport {
             out.append(dotLanes(eventContexts, name -> name + " occurred"));
         }
         out.append("<h2>Decisions</h2>\n").append(lanes(decisions));
+        if (!requirementEvents.isEmpty() || requirementStatus != null) {
+            out.append(new RequirementLane(requirementEvents, requirementStatus, requirementTimeScale, this).html());
+        }
         out.append("<h2>Adaptations</h2>\n<table><tr><th>time (s)</th><th>variation point</th><th>from</th><th>to</th>"
                 + "<th>why</th><th>inputs the engine saw</th></tr>\n");
         for (String[] row : adaptations) {
@@ -295,35 +381,35 @@ public final class TimelineReport {
         return svg;
     }
 
-    private StringBuilder svgStart(int height) {
+    static StringBuilder svgStart(int height) {
         return new StringBuilder(String.format(Locale.ROOT,
                 "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 0 %d %d\">\n", WIDTH,
                 height, WIDTH, height));
     }
 
-    private void axes(StringBuilder svg, int height) {
+    void axes(StringBuilder svg, int height) {
         svg.append(String.format(Locale.ROOT, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#444\"/>\n", LEFT,
                 height + 2, WIDTH - RIGHT, height + 2));
-        long step = Math.max(1000, (end / 10 / 1000) * 1000);
-        for (long t = 0; t <= end; t += step) {
+        long step = Math.max(1000, ((end - from) / 10 / 1000) * 1000);
+        for (long t = (from + step - 1) / step * step; t <= end; t += step) {
             svg.append(text(x(t), height + 18, "middle", seconds(t) + " s"));
         }
     }
 
-    private double x(long at) {
-        return LEFT + (WIDTH - LEFT - RIGHT) * (double) Math.min(at, end) / end;
+    double x(long at) {
+        return LEFT + (WIDTH - LEFT - RIGHT) * (double) (Math.min(Math.max(at, from), end) - from) / (end - from);
     }
 
     private static String text(double x, double y, String anchor, String text) {
         return text(x, y, anchor, text, "#222");
     }
 
-    private static String text(double x, double y, String anchor, String text, String color) {
+    static String text(double x, double y, String anchor, String text, String color) {
         return String.format(Locale.ROOT, "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"%s\" fill=\"%s\">%s</text>\n", x, y,
                 anchor, color, escape(text));
     }
 
-    private static String seconds(long ms) {
+    static String seconds(long ms) {
         return String.format(Locale.ROOT, "%.1f", ms / 1000.0);
     }
 

@@ -40,6 +40,7 @@ public final class MonitorPage {
                 <span style="border-color:#dc2626">failure</span><span style="border-color:#9ca3af">skipped</span></div>
                 <h3>Variation points</h3><table id="varpoints"><tbody></tbody></table>
                 <h3>Metrics</h3><table id="metrics"><tbody></tbody></table>
+                <h3>Requirements</h3><table id="requirements"><tbody></tbody></table>
                 <div id="tree-info"></div>
                 </aside>
                 <script>
@@ -59,6 +60,13 @@ public final class MonitorPage {
                   if(!tr){tr=document.createElement('tr');tr.dataset.name=name;tr.appendChild(document.createElement('th'));
                     tr.appendChild(document.createElement('td'));tr.firstChild.textContent=name;body.appendChild(tr);}
                   tr.lastChild.textContent=typeof value==='number'?(Math.round(value*1000)/1000):JSON.stringify(value).replace(/^"|"$/g,'');}
+                function requirement(m){const body=document.querySelector('#requirements tbody');
+                  const tr=document.createElement('tr');tr.className=m.verdict;
+                  const values=Object.entries(m.values||{}).map(([n,v])=>n+' = '+JSON.stringify(v).replace(/^"|"$/g,'')).join(', ');
+                  [m.time.toFixed(1)+' s',m.name,m.verdict==='met'?'met again':m.verdict+(values?': '+values:'')].forEach(t=>{
+                    const td=document.createElement('td');td.textContent=t;tr.appendChild(td);});
+                  if(m.verdict==='violated')tr.style.color='#dc2626';
+                  body.insertBefore(tr,body.firstChild);while(body.children.length>20)body.removeChild(body.lastChild);}
                 const events=new EventSource('events');
                 const connection=document.getElementById('connection');
                 events.onopen=()=>{connection.textContent='connected';connection.className='on';};
@@ -67,11 +75,13 @@ public final class MonitorPage {
                   Object.entries(s.statuses).forEach(([id,to])=>setStatus(id,to));
                   Object.entries(s.varpoints).forEach(([n,v])=>{row('varpoints',n,v);highlight(n,v);});
                   Object.entries(s.metrics).forEach(([n,v])=>row('metrics',n,v));
+                  document.querySelector('#requirements tbody').replaceChildren();(s.requirements||[]).forEach(requirement);
                   document.getElementById('tree-info').textContent=s.tree?'tree '+s.tree:'no executor yet';});
                 events.addEventListener('reset',e=>{clearStatuses();const m=JSON.parse(e.data);
                   document.getElementById('tree-info').textContent='tree '+m.tree+' (started '+new Date(m.time).toLocaleTimeString()+')';});
                 events.addEventListener('status',e=>{const m=JSON.parse(e.data);setStatus(m.node,m.to);});
                 events.addEventListener('varpoint',e=>{const m=JSON.parse(e.data);row('varpoints',m.name,m.value);highlight(m.name,m.value);});
+                events.addEventListener('requirement',e=>requirement(JSON.parse(e.data)));
                 events.addEventListener('metric',e=>{const m=JSON.parse(e.data);row('metrics',m.name,m.value);});
                 </script>
                 </body></html>

@@ -57,7 +57,7 @@ public final class MonitorServer implements AutoCloseable {
         server.createContext("/", this::page);
         server.createContext("/state", this::state);
         server.createContext("/events", this::events);
-        this.bus = new BusClient("monitor", busIn, busOut, List.of(Topics.BT_STATUS, Topics.BT_TREE, Topics.VARIANT_PREFIX,
+        this.bus = new BusClient("monitor", busIn, busOut, List.of(Topics.BT_STATUS, Topics.BT_TREE, Topics.REQUIREMENT, Topics.VARIANT_PREFIX,
                 Topics.BLACKBOARD_PREFIX, Topics.DECISION, Topics.ESTIMATE), state::onBus);
         bus.start();
         server.start();

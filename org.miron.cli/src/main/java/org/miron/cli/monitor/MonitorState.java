@@ -37,6 +37,9 @@ final class MonitorState {
     private final Map<String, String> statuses = new LinkedHashMap<>();
     private final Map<String, JsonNode> varpoints = new LinkedHashMap<>();
     private final Map<String, Double> metrics = new LinkedHashMap<>();
+    /** The latest requirement events (miron.requirement), oldest first, at most {@link #REQUIREMENT_EVENTS}. */
+    private final java.util.ArrayDeque<JsonNode> requirements = new java.util.ArrayDeque<>();
+    static final int REQUIREMENT_EVENTS = 20;
     private final List<Subscriber> subscribers = new CopyOnWriteArrayList<>();
     private final AtomicLong rejected = new AtomicLong();
     private final UnaryOperator<String> metricName;
@@ -91,6 +94,17 @@ final class MonitorState {
                 return false;
             }
             m.path("decisions").fields().forEachRemaining(d -> varpoint(d.getKey(), d.getValue()));
+        } else if (topic.equals(Topics.REQUIREMENT)) {
+            if (!m.path("name").isTextual() || !m.path("verdict").isTextual() || !m.path("time").isNumber()) {
+                return false;
+            }
+            synchronized (this) {
+                requirements.addLast(m);
+                if (requirements.size() > REQUIREMENT_EVENTS) {
+                    requirements.removeFirst();
+                }
+            }
+            broadcast(new Event("requirement", m.toString()));
         } else if (topic.equals(Topics.ESTIMATE)) {
             if (!m.path("name").isTextual() || !m.path("value").isNumber()) {
                 return false;
@@ -139,7 +153,7 @@ final class MonitorState {
         return subscribers.size();
     }
 
-    /** {"tree","statuses":{node: status},"varpoints":{},"metrics":{},"seq","rejected"} */
+    /** {"tree","statuses":{node: status},"varpoints":{},"metrics":{},"requirements":[event...],"seq","rejected"} */
     synchronized ObjectNode snapshot() {
         ObjectNode state = Json.MAPPER.createObjectNode();
         state.put("tree", tree);
@@ -149,6 +163,7 @@ final class MonitorState {
         varpoints.forEach(v::set);
         ObjectNode mt = state.putObject("metrics");
         metrics.forEach(mt::put);
+        requirements.forEach(state.putArray("requirements")::add);
         state.put("seq", lastStatusSeq);
         state.put("rejected", rejected.get());
         return state;

@@ -2,6 +2,7 @@ package org.miron.cli.demo;
 
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertNull;
 import static org.junit.Assert.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -24,6 +25,8 @@ import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.player.Scenario;
+import org.miron.runtime.requirement.RequirementModel;
+import org.miron.runtime.requirement.Verdict;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.roqme.expr.Compiler;
 import org.miron.runtime.roqme.model.ModelReader;
@@ -101,6 +104,57 @@ public class DemoTest {
         assertFalse(report, report.contains("metric_Intralogistics_"));
         assertEquals("the report names every metric", 2,
                 List.of("power_autonomy", "safety").stream().filter(report::contains).count());
+    }
+
+    /**
+     * Requirements checked live beside the engine (a hand-written testbot.requirements.json, as
+     * `miron generate` will write it): at time scale 0.5 the violation is told at the instant the
+     * low safety arrived, on the console's axis, then met again; a requirement over a context that
+     * never comes is never evaluated; the verdicts close the run and the report lists the violation.
+     */
+    @Test
+    public void requirementsAreCheckedLiveToldAsTheyHappenAndReported() throws Exception {
+        SkillTable.Entry move = new SkillTable.Entry(300, "SUCCESS", NullNode.getInstance(), Json.object());
+        StringWriter console = new StringWriter();
+        Path out = temp.newFolder("req").toPath();
+        Demo.Result result = new Demo(TestModels.copy("testbot", temp.newFolder("reqmodel").toPath()), WOVEN,
+                Scenario.load(Path.of("src/test/resources/demo/short.scenario.json")),
+                new SkillTable(Map.of("*", move)), out, Endpoints.freeLoopback(), new PrintWriter(console, true))
+                .timeScale(0.5).requirements(RequirementModel.load(Path.of("src/test/resources/demo/testbot.requirements.json")))
+                .run();
+
+        String told = console.toString();
+        java.util.regex.Matcher low = java.util.regex.Pattern.compile("(\\d+\\.\\d) s  RoQME   safety 0\\.90 → 0\\.30").matcher(told);
+        java.util.regex.Matcher violated = java.util.regex.Pattern
+                .compile("(\\d+\\.\\d) s  REQ     alwaysSafe violated: roqme\\.safety = 0\\.3\\n").matcher(told);
+        assertTrue(told, low.find() && violated.find());
+        assertEquals(told, Double.parseDouble(low.group(1)), Double.parseDouble(violated.group(1)), 0.15);
+        assertTrue(told, told.contains("REQ     alwaysSafe met again"));
+        assertTrue(told, told.indexOf("alwaysSafe violated") < told.indexOf("alwaysSafe met again"));
+        assertTrue(told, told.contains("REQ     alwaysSafe: violated once over the run, first at " + violated.group(1) + " s"));
+        assertTrue(told, told.contains("REQ     ghostLow: never evaluated: no value for roqme.Ghost"));
+        assertTrue(told, told.contains("REQ     slowWhenUnsafe: "));
+        assertEquals(List.of("alwaysSafe", "slowWhenUnsafe", "ghostLow"),
+                result.requirements().stream().map(r -> r.name()).toList());
+        assertEquals(Verdict.VIOLATED, result.requirements().get(0).verdict());
+        assertEquals(Verdict.NOT_EVALUATED, result.requirements().get(2).verdict());
+
+        String report = Files.readString(result.report());
+        assertTrue(report, report.contains("<h2>Requirements</h2>"));
+        assertTrue(report, report.contains("<tr class=\"violation\"><td>alwaysSafe</td><td>" + violated.group(1) + "</td>"));
+        assertTrue(report, report.contains("<td>ghostLow</td><td>not-evaluated</td><td>0</td>"));
+    }
+
+    @Test
+    public void theDemoChecksTheGeneratedRequirementsOnlyWhenThereAreSome() throws Exception {
+        Path generated = temp.newFolder("generated").toPath();
+        assertNull("no file: nothing to check", DemoRequirements.load(generated, "testbot"));
+        Files.writeString(generated.resolve("testbot.requirements.json"),
+                "{\"format\":1,\"model\":\"testbot\",\"signals\":[],\"requirements\":[]}");
+        assertNull("no requirement: nothing to check", DemoRequirements.load(generated, "testbot"));
+        Files.copy(Path.of("src/test/resources/demo/testbot.requirements.json"), generated.resolve("testbot.requirements.json"),
+                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        assertEquals(3, DemoRequirements.load(generated, "testbot").requirements().size());
     }
 
     /**

@@ -15,8 +15,9 @@ public final class Topics {
     /** The BT executor: every node status change, and the tree it runs (docs/wire-formats.md). */
     public static final String BT_STATUS = "miron.bt.status";
     public static final String BT_TREE = "miron.bt.tree";
-    /** A requirement violated, or met again (docs/requirements.md). */
+    /** The live requirement monitors (LiveRequirements): each violation and met-again, and their status. */
     public static final String REQUIREMENT = "miron.requirement";
+    public static final String REQUIREMENT_STATUS = "miron.requirement.status";
     /** The broker's own topics: its hello (with its epoch) and the replies to sync subscriptions. */
     public static final String BROKER_PREFIX = "miron.broker.";
     public static final String BROKER_HELLO = "miron.broker.hello";
