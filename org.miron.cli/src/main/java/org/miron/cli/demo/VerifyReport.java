@@ -87,7 +87,7 @@ public final class VerifyReport {
         for (TimelineEvent e : again.timeline()) {
             events.add(new BusRecorder.Event(e.at(), e.topic(), e.body()));
         }
-        String page = new TimelineReport(c.requirement().name(), events, to, names).html();
+        String page = new TimelineReport(c.requirement().name(), events, from, to, names).html();
         int start = page.indexOf("</h1>");
         int end = page.lastIndexOf("</body>");
         return "<h2 id=\"" + anchor(c, r) + "\">" + TimelineReport.escape(c.requirement().name()) + " under "
