@@ -19,9 +19,9 @@ import org.miron.runtime.sim.Setup;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
@@ -36,22 +36,11 @@ import picocli.CommandLine.Spec;
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = { "0:simulated", "1:the model or the world file has errors", "2:usage error" })
 public class SimulateCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "MODEL.miron", description = "the MIRoN model")
-    Path model;
-
-    @Option(names = "--world", required = true, paramLabel = "FILE", description = "the world file (docs/simulator.md)")
-    Path world;
-
-    @Option(names = "--duration", paramLabel = "TIME", defaultValue = "8h",
-            description = "simulated time per run, e.g. 30m, 8h (default: ${DEFAULT-VALUE})")
-    String duration;
+    @Mixin
+    SimulationOptions run = new SimulationOptions();
 
     @Option(names = "--runs", paramLabel = "N", defaultValue = "10", description = "runs per policy (default: ${DEFAULT-VALUE})")
     int runs;
-
-    @Option(names = "--seed", paramLabel = "S", defaultValue = "1",
-            description = "run i of every policy uses seed S+i; the same seed gives the same output (default: ${DEFAULT-VALUE})")
-    long seed;
 
     @Option(names = "--policy", paramLabel = "POLICY",
             description = "adaptive, preset or fixed:vp=value,...; repeatable (default: adaptive and preset)")
@@ -60,9 +49,6 @@ public class SimulateCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "miron-simulate",
             description = "where summary.json, report.html and the generated model go (default: ${DEFAULT-VALUE})")
     Path out;
-
-    @Option(names = "--threads", paramLabel = "N", description = "parallel runs (default: the number of cores)")
-    Integer threads;
 
     @Option(names = "--timeline", paramLabel = "TIME", defaultValue = "30m",
             description = "how much of the first run of each policy the report's timelines show (default: ${DEFAULT-VALUE})")
@@ -79,7 +65,7 @@ public class SimulateCommand implements Callable<Integer> {
         long timelineMs;
         List<Policy> parsed = new ArrayList<>();
         try {
-            durationMs = Durations.parseMs(duration);
+            durationMs = Durations.parseMs(run.duration);
             timelineMs = Durations.parseMs(timeline);
             for (String p : policies.isEmpty() ? List.of("adaptive", "preset") : policies) {
                 parsed.add(Policy.parse(p));
@@ -90,23 +76,23 @@ public class SimulateCommand implements Callable<Integer> {
         if (runs < 1 || durationMs <= 0) {
             return usage("--runs and --duration must be positive");
         }
-        if (!Files.isRegularFile(model) || !Files.isRegularFile(world)) {
-            return usage((Files.isRegularFile(model) ? world : model) + ": error: no such file");
+        if (!Files.isRegularFile(run.model) || !Files.isRegularFile(run.world)) {
+            return usage((Files.isRegularFile(run.model) ? run.world : run.model) + ": error: no such file");
         }
-        SimulationModel.Loaded loaded = SimulationModel.load(model, world, out, parsed, err, "simulate", 1);
+        SimulationModel.Loaded loaded = SimulationModel.load(run.model, run.world, out, parsed, err, "simulate", 1);
         if (loaded.setup() == null) {
             return loaded.status();
         }
         Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
         Setup setup = loaded.setup();
-        int cores = threads != null ? Math.max(1, threads) : Runtime.getRuntime().availableProcessors();
-        console.println("MIRoN simulate: " + model.getFileName() + " in " + world.getFileName() + ", " + runs + " run(s) of "
-                + duration + " per policy, seed " + seed);
+        int cores = run.cores();
+        console.println("MIRoN simulate: " + run.model.getFileName() + " in " + run.world.getFileName() + ", " + runs + " run(s) of "
+                + run.duration + " per policy, seed " + run.seed);
         console.flush();
         long started = System.nanoTime();
         List<Comparison.PolicyRuns> results;
         try {
-            results = Comparison.run(setup, parsed, runs, seed, durationMs, timelineMs, cores);
+            results = Comparison.run(setup, parsed, runs, run.seed, durationMs, timelineMs, cores);
         } catch (RuntimeException e) { // an expression that cannot run on the values it met (a script error)
             err.println("miron simulate: error: a run stopped: " + e.getMessage());
             err.flush();
@@ -122,8 +108,8 @@ public class SimulateCommand implements Callable<Integer> {
         }
         Files.createDirectories(out);
         Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
-                .writeValueAsString(Comparison.summary(results, runs, seed, durationMs)) + "\n", StandardCharsets.UTF_8);
-        new SimulationReport(model.getFileName() + " in " + world.getFileName(), results, setup.world(), timelineMs)
+                .writeValueAsString(Comparison.summary(results, runs, run.seed, durationMs)) + "\n", StandardCharsets.UTF_8);
+        new SimulationReport(run.model.getFileName() + " in " + run.world.getFileName(), results, setup.world(), timelineMs)
                 .write(out.resolve("report.html"));
         console.println("  summary: " + out.resolve("summary.json"));
         console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");

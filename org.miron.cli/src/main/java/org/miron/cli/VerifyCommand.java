@@ -19,9 +19,9 @@ import org.miron.runtime.sim.Setup;
 import org.miron.runtime.sim.Verification;
 
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
@@ -39,15 +39,8 @@ import picocli.CommandLine.Spec;
             "1:a requirement is violated, a probabilistic one fails or stays undecided, or one was never evaluated",
             "2:usage error, a model with errors or without requirements" })
 public class VerifyCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "MODEL.miron", description = "the MIRoN model")
-    Path model;
-
-    @Option(names = "--world", required = true, paramLabel = "FILE", description = "the world file (docs/simulator.md)")
-    Path world;
-
-    @Option(names = "--duration", paramLabel = "TIME", defaultValue = "8h",
-            description = "simulated time per run, e.g. 30m, 8h (default: ${DEFAULT-VALUE})")
-    String duration;
+    @Mixin
+    SimulationOptions run = new SimulationOptions();
 
     @Option(names = "--runs", paramLabel = "N",
             description = "runs per policy (default: 10; with a probabilistic requirement and no --runs, the sequential test decides)")
@@ -66,10 +59,6 @@ public class VerifyCommand implements Callable<Integer> {
             description = "most runs per policy of a sequential check (default: ${DEFAULT-VALUE})")
     int maxRuns;
 
-    @Option(names = "--seed", paramLabel = "S", defaultValue = "1",
-            description = "run i of every policy uses seed S+i; the same seed gives the same output (default: ${DEFAULT-VALUE})")
-    long seed;
-
     @Option(names = "--policy", paramLabel = "POLICY",
             description = "adaptive, preset or fixed:vp=value,...; repeatable (default: adaptive)")
     List<String> policies = new ArrayList<>();
@@ -77,9 +66,6 @@ public class VerifyCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "miron-verify",
             description = "where summary.json, report.html and the generated model go (default: ${DEFAULT-VALUE})")
     Path out;
-
-    @Option(names = "--threads", paramLabel = "N", description = "parallel runs (default: the number of cores)")
-    Integer threads;
 
     @Spec
     CommandSpec spec;
@@ -91,7 +77,7 @@ public class VerifyCommand implements Callable<Integer> {
         long durationMs;
         List<Policy> parsed = new ArrayList<>();
         try {
-            durationMs = Durations.parseMs(duration);
+            durationMs = Durations.parseMs(run.duration);
             for (String p : policies.isEmpty() ? List.of("adaptive") : policies) {
                 parsed.add(Policy.parse(p));
             }
@@ -111,16 +97,16 @@ public class VerifyCommand implements Callable<Integer> {
         if (!(indifference > 0 && indifference < 0.5)) {
             return usage("miron verify: error: --indifference must lie in (0, 0.5), e.g. 0.05");
         }
-        if (!Files.isRegularFile(model) || !Files.isRegularFile(world)) {
-            return usage((Files.isRegularFile(model) ? world : model) + ": error: no such file");
+        if (!Files.isRegularFile(run.model) || !Files.isRegularFile(run.world)) {
+            return usage((Files.isRegularFile(run.model) ? run.world : run.model) + ": error: no such file");
         }
-        SimulationModel.Loaded loaded = SimulationModel.load(model, world, out, parsed, err, "verify", 2);
+        SimulationModel.Loaded loaded = SimulationModel.load(run.model, run.world, out, parsed, err, "verify", 2);
         if (loaded.setup() == null) {
             return loaded.status();
         }
         Setup setup = loaded.setup();
         if (setup.requirements() == null || setup.requirements().requirements().isEmpty()) {
-            return usage(model + ": error: the model states no requirement: nothing to verify (docs/requirements.md)");
+            return usage(run.model + ": error: the model states no requirement: nothing to verify (docs/requirements.md)");
         }
         boolean probabilistic = setup.requirements().requirements().stream().anyMatch(r -> r.probability() != null);
         if (confidence != null && !probabilistic) {
@@ -128,14 +114,14 @@ public class VerifyCommand implements Callable<Integer> {
                     + "and the model states none: use --runs");
         }
         boolean sequential = confidence != null || (runs == null && probabilistic);
-        int cores = threads != null ? Math.max(1, threads) : Runtime.getRuntime().availableProcessors();
+        int cores = run.cores();
         Verification.Options options = new Verification.Options(sequential ? 0 : runs == null ? 10 : runs, maxRuns,
-                confidence == null ? 0.95 : confidence, indifference, seed, durationMs, cores);
+                confidence == null ? 0.95 : confidence, indifference, run.seed, durationMs, cores);
         Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
-        console.println("MIRoN verify: " + model.getFileName() + " in " + world.getFileName() + ", "
+        console.println("MIRoN verify: " + run.model.getFileName() + " in " + run.world.getFileName() + ", "
                 + setup.requirements().requirements().size() + " requirement(s), "
-                + (sequential ? "runs of " + duration + " until the sequential test decides (at most " + maxRuns + ")"
-                        : options.runs() + " run(s) of " + duration) + " per policy, seed " + seed);
+                + (sequential ? "runs of " + run.duration + " until the sequential test decides (at most " + maxRuns + ")"
+                        : options.runs() + " run(s) of " + run.duration) + " per policy, seed " + run.seed);
         console.flush();
         long started = System.nanoTime();
         List<Verification.PolicyResult> results;
@@ -156,13 +142,13 @@ public class VerifyCommand implements Callable<Integer> {
         Files.createDirectories(out);
         Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
                 .writeValueAsString(Verification.summary(results, options)) + "\n", StandardCharsets.UTF_8);
-        new VerifyReport(model.getFileName() + " in " + world.getFileName(), setup, results, options,
-                ModelNames.of(model.toFile())).write(out.resolve("report.html"));
+        new VerifyReport(run.model.getFileName() + " in " + run.world.getFileName(), setup, results, options,
+                ModelNames.of(run.model.toFile())).write(out.resolve("report.html"));
         console.println("  summary: " + out.resolve("summary.json"));
         console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
         console.flush();
         int total = results.stream().mapToInt(r -> r.runs().size()).sum();
-        err.printf(Locale.ROOT, "miron verify: %d run(s) of %s in %.1f s on %d thread(s)%n", total, duration, wall, cores);
+        err.printf(Locale.ROOT, "miron verify: %d run(s) of %s in %.1f s on %d thread(s)%n", total, run.duration, wall, cores);
         err.flush();
         return Verification.allHold(results) ? 0 : 1;
     }
