@@ -274,6 +274,21 @@ function miron() {
                     },
                 },
                 {
+                    match: String.raw`\b(requirement)\s+(${ID})(?=\s*:)`,
+                    captures: {
+                        1: { name: `storage.type.${s}` },
+                        2: { name: `entity.name.function.requirement.${s}` },
+                    },
+                },
+                {
+                    // requirements: ... with probability >= 0.9 (with and probability are names elsewhere)
+                    match: String.raw`\b(with)\s+(probability)\b`,
+                    captures: {
+                        1: { name: `keyword.other.probability.${s}` },
+                        2: { name: `keyword.other.probability.${s}` },
+                    },
+                },
+                {
                     match: String.raw`(@)?\b(varpoint)\b`,
                     captures: {
                         1: { name: `storage.type.annotation.${s} punctuation.definition.annotation.${s}` },
@@ -283,6 +298,9 @@ function miron() {
                 { name: `storage.type.${s}`, match: words(['rule']) },
                 { name: `keyword.other.${s}`, match: words(['miron', 'as']) },
                 { name: `keyword.control.implies.${s}`, match: words(['implies']) },
+                { name: `keyword.control.temporal.${s}`, match: words(['always', 'never', 'eventually']) },
+                // within 5 seconds (within is a name elsewhere)
+                { name: `keyword.control.temporal.${s}`, match: String.raw`\bwithin\b(?=\s*[0-9])` },
                 { name: `keyword.other.affects.${s}`, match: words(['affects']) },
                 { name: `constant.language.preset.${s}`, match: words(['preset']) },
                 {

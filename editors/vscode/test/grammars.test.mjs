@@ -160,6 +160,18 @@ describe('MIRoN grammar (intralogistics.miron)', async () => {
         expectScope(t, 'implies task = task::dock', 'implies', 'keyword.control.implies.miron');
         expectScope(t, 'implies task = task::dock', 'dock', 'variable.other.enummember.miron');
     });
+    test('requirements', () => {
+        expectScope(t, 'requirement docksOnLowBattery', 'requirement', 'storage.type.miron');
+        expectScope(t, 'requirement docksOnLowBattery', 'docksOnLowBattery', 'entity.name.function.requirement.miron');
+        expectScope(t, '  always (roqme.power_autonomy', 'always', 'keyword.control.temporal.miron');
+        expectScope(t, '  always (roqme.power_autonomy', 'implies', 'keyword.control.implies.miron');
+        expectScope(t, '  always (roqme.power_autonomy', 'eventually', 'keyword.control.temporal.miron');
+        expectScope(t, '  always (roqme.power_autonomy', 'within', 'keyword.control.temporal.miron');
+        expectScope(t, '  always (roqme.power_autonomy', 'seconds', 'keyword.other.unit.time.miron');
+        expectScope(t, 'requirement neverStranded', 'never', 'keyword.control.temporal.miron');
+        expectScope(t, 'requirement rarelyStranded', 'with', 'keyword.other.probability.miron');
+        expectScope(t, 'requirement rarelyStranded', 'probability', 'keyword.other.probability.miron');
+    });
     test('number ranges', () => {
         expectScope(t, '@varpoint maxVelocity', '10', 'constant.numeric.miron');
         expectScope(t, '@varpoint maxVelocity', '100', 'constant.numeric.miron');

@@ -17,6 +17,7 @@ import org.miron.dsl.miron.Binding;
 import org.miron.dsl.miron.BehaviorTreeEnumType;
 import org.miron.dsl.miron.ImpactOnQuality;
 import org.miron.dsl.miron.NumericSampledType;
+import org.miron.dsl.miron.Requirement;
 import org.miron.dsl.miron.Rule;
 import org.miron.dsl.roqme.BeliefExpression;
 import org.miron.dsl.roqme.BoundedType;
@@ -148,6 +149,14 @@ public class DslFormatter extends AbstractJavaFormatter {
             doc.prepend(region, f -> f.setNewLines(1, 1, 2));
         } else if (owner instanceof Rule rule && text.equals("implies")) {
             formatRule(rule, region, doc);
+        } else if (owner instanceof Requirement requirement && text.equals(":")
+                && region.getNextHiddenRegion().isMultiline()) {
+            // a long formula written on the next line stays there, one level in (docs/requirements.md)
+            ISemanticRegion last = lastRegion(requirement);
+            doc.append(region, this::newLine);
+            if (last != null) {
+                doc.set(region.getNextHiddenRegion(), last.getNextHiddenRegion(), this::indent);
+            }
         }
         // one action per line in an observation block
         if (owner instanceof Observation && text.equals("{") && block) {

@@ -87,7 +87,7 @@ public class ExamplesTest {
         MironModel model = (MironModel) check("examples/hospital-delivery/hospital.miron").getContents().get(0);
         assertEquals("HospitalDelivery", model.getNamespace());
         assertEquals(7, model.getVariables().size());
-        assertEquals(2 + 6, model.getSentences().size());
+        assertEquals(2 + 6 + 3, model.getSentences().size()); // imports, rules, requirements
         VariationPoint inflation = (VariationPoint) model.getVariables().get(4);
         BtBinding binding = (BtBinding) inflation.getBinding();
         org.miron.dsl.bt.BtXPath.Result selected = org.miron.dsl.bt.BtXPath.evaluate(binding.getXpath(),

@@ -96,6 +96,12 @@ public class FormatterTest {
             assertEquals(formatted, true,
                     formatted.contains("rule noBattery : roqme.power_autonomy < 0.3\n  implies task = task::dock\n"));
             assertEquals(formatted, true, formatted.contains("} in arch {"));
+            // a requirement's formula stays on its own line, one level in, or on the requirement's line
+            Files.writeString(model, Files.readString(model).replace("docksOnLowBattery :\n  always (", "docksOnLowBattery :\n\t\talways  (")
+                    .replace("neverStranded : never (", "neverStranded :   never ("));
+            formatted = check(model.toFile());
+            assertEquals(formatted, true, formatted.contains("requirement docksOnLowBattery :\n  always (roqme.power_autonomy"));
+            assertEquals(formatted, true, formatted.contains("requirement neverStranded : never (roqme.BatteryLevel < 1 and"));
         } finally {
             try (Stream<Path> files = Files.walk(copy)) {
                 files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());

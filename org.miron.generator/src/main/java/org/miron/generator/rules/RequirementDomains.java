@@ -133,13 +133,12 @@ final class RequirementDomains {
             return Outcomes.BOTH;
         }
         boolean canBeTrue = false, canBeFalse = false;
-        int[] index = new int[varpoints.size()];
         for (long s = 0; s < situations.count(); s++) {
             Map<String, Double> in = situations.get(s);
             for (long k = 0; k < total / situations.count(); k++) {
                 Map<String, Integer> assign = new HashMap<>();
                 long rest = k;
-                for (int v = 0; v < index.length; v++) {
+                for (int v = 0; v < varpoints.size(); v++) {
                     int size = sizes.get(varpoints.get(v));
                     assign.put(varpoints.get(v), (int) (rest % size));
                     rest /= size;

@@ -118,6 +118,14 @@ public class CodeActionLspTest {
     }
 
     @Test
+    public void unknownNameInARequirementOffersTheClosestOne() throws Exception {
+        String text = Files.readString(session.workspace.resolve("intralogistics.miron")).replace(
+                "never (roqme.BatteryLevel < 1 and not roqme.Docked)\n", "never (roqme.BatteryLevel < 1 and not roqme.Dockd)\n");
+        String fixed = fix("intralogistics.miron", text, "miron.requirement-unknown-name", "Change to roqme.Docked");
+        assertEquals(Files.readString(session.workspace.resolve("intralogistics.miron")), fixed);
+    }
+
+    @Test
     public void unknownSubtreeKeepsTheQuotes() throws Exception {
         String text = Files.readString(session.workspace.resolve("intralogistics.bt")).replace(
                 "<SubTreePlus ID=\"PickDeliverCharge\"", "<SubTreePlus ID=\"PickDeliverChrge\"");

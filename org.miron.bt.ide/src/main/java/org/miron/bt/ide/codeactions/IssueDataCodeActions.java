@@ -52,6 +52,7 @@ public class IssueDataCodeActions implements ICodeActionService2 {
             Map.entry("bt.unknown-reference", Fix.REPLACE),
             Map.entry("bt.missing-include", Fix.ADD_INCLUDE),
             Map.entry("roqme.unknown-reference", Fix.REPLACE),
+            Map.entry("miron.requirement-unknown-name", Fix.REPLACE),
             Map.entry("roqme.missing-import", Fix.ADD_IMPORT),
             // BehaviorTree.CPP 3/4 differences whose replacement is a rename (BtVersionValidator)
             Map.entry("bt.v3-only-element", Fix.RENAME_TAG),
