@@ -51,11 +51,12 @@ public class RequirementsJsonTest {
         assertEquals("intralogistics", generated.get("model").asText());
         // the documented requirement, node for node (its state trees are the engine's expression trees)
         assertEquals(normalised(doc.get("requirements").get(0)), normalised(generated.get("requirements").get(0)));
-        List<String> names = List.of("docksOnLowBattery", "neverStranded", "slowNearPeople", "rarelyStranded");
+        List<String> names = List.of("docksOnLowBattery", "neverStranded", "slowNearPeople", "slowSoonNearPeople",
+                "rarelyStranded");
         for (int i = 0; i < names.size(); i++) {
             assertEquals(names.get(i), generated.get("requirements").get(i).get("name").asText());
         }
-        assertEquals(0.9, generated.get("requirements").get(3).get("probability").asDouble(), 0);
+        assertEquals(0.9, generated.get("requirements").get(4).get("probability").asDouble(), 0);
         // each documented signal the example reads is described as documented (the doc abbreviates maxVelocity's values)
         for (JsonNode signal : doc.get("signals")) {
             JsonNode mine = null;
