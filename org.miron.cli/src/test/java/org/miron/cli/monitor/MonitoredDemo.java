@@ -1,6 +1,7 @@
 package org.miron.cli.monitor;
 
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.io.StringWriter;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.regex.Matcher;
@@ -22,13 +23,17 @@ final class MonitoredDemo {
     private final AtomicInteger status = new AtomicInteger(-1);
     private final Thread thread;
 
-    /** Starts the demo writing into {@code dir} at {@code timeScale}. */
+    /** Starts the demo of the hospital example writing into {@code dir} at {@code timeScale}. */
     MonitoredDemo(String dir, String timeScale) {
+        this(RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron"), dir, timeScale);
+    }
+
+    /** The same on another model (a copy of the example, say, with a requirement of the test's own). */
+    MonitoredDemo(Path model, String dir, String timeScale) {
         CommandLine cli = MironCli.commandLine();
         cli.setOut(new PrintWriter(out, true));
         cli.setErr(new PrintWriter(err, true));
-        thread = new Thread(() -> status.set(cli.execute("demo", "--model",
-                RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron").toString(), "--out", dir,
+        thread = new Thread(() -> status.set(cli.execute("demo", "--model", model.toString(), "--out", dir,
                 "--time-scale", timeScale, "--monitor", "0")), "demo");
         thread.start();
     }
