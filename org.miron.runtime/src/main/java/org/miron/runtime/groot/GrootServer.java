@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.miron.executor.NodeStatus;
 import org.miron.executor.Tree;
 import org.zeromq.SocketType;
@@ -38,6 +39,7 @@ public final class GrootServer implements AutoCloseable {
     private final Thread serverThread;
     private final Thread heartbeatThread;
     private volatile boolean running = true;
+    private final AtomicBoolean closed = new AtomicBoolean();
     private volatile long lastRequestNanos = System.nanoTime();
     private volatile Duration heartbeatDelay = DEFAULT_HEARTBEAT_DELAY;
 
@@ -237,6 +239,9 @@ public final class GrootServer implements AutoCloseable {
     /** Removes every hook (a paused tree goes on), detaches from the tree and closes the sockets. */
     @Override
     public void close() {
+        if (!closed.compareAndSet(false, true)) {
+            return;
+        }
         hooks.removeAll();
         tree.context().setTickHook(null);
         tree.context().removeListener(statuses);
