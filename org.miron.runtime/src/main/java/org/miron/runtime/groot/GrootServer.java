@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
@@ -43,12 +44,12 @@ public final class GrootServer implements AutoCloseable {
     private volatile long lastRequestNanos = System.nanoTime();
     private volatile Duration heartbeatDelay = DEFAULT_HEARTBEAT_DELAY;
 
-    private GrootServer(Tree tree, int port) {
+    private GrootServer(Tree tree, int port, DeclaredModels declared) {
         this.tree = tree;
         numbering = new GrootTree(tree);
         statuses = new StatusSnapshot(numbering);
         hooks = new GrootHooks(numbering, this::publishReached);
-        xml = GrootTreeXml.write(numbering);
+        xml = GrootTreeXml.write(numbering, declared);
         server = zmq.createSocket(SocketType.REP);
         publisher = zmq.createSocket(SocketType.PUB);
         for (ZMQ.Socket socket : List.of(server, publisher)) {
@@ -75,10 +76,15 @@ public final class GrootServer implements AutoCloseable {
 
     /** Serves Groot2 for this tree on 127.0.0.1:port and port + 1 (attach before the tree runs). */
     public static GrootServer start(Tree tree, int port) {
+        return start(tree, port, null);
+    }
+
+    /** The same, the application's node models as {@code treeFile}'s TreeNodesModel declares them (null: none). */
+    public static GrootServer start(Tree tree, int port, Path treeFile) {
         if (port < 1 || port > 65534) {
             throw new IllegalArgumentException("the Groot2 port must be 1 to 65534 (it uses the next one too): " + port);
         }
-        return new GrootServer(tree, port);
+        return new GrootServer(tree, port, treeFile == null ? DeclaredModels.none() : DeclaredModels.of(treeFile));
     }
 
     /** How long without a request before the hooks are disabled (tests shorten it). */

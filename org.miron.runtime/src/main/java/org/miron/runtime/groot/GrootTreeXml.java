@@ -26,16 +26,18 @@ final class GrootTreeXml {
             "_onHalted", "_onFailure", "_onSuccess", "_post");
 
     private final GrootTree tree;
+    private final DeclaredModels declared;
     private final StringBuilder out = new StringBuilder();
     /** Registration name → the model written in TreeNodesModel, sorted as the library's std::map. */
     private final Map<String, Node> models = new TreeMap<>();
 
-    private GrootTreeXml(GrootTree tree) {
+    private GrootTreeXml(GrootTree tree, DeclaredModels declared) {
         this.tree = tree;
+        this.declared = declared;
     }
 
-    static String write(GrootTree tree) {
-        return new GrootTreeXml(tree).document();
+    static String write(GrootTree tree, DeclaredModels declared) {
+        return new GrootTreeXml(tree, declared).document();
     }
 
     private String document() {
@@ -112,16 +114,23 @@ final class GrootTreeXml {
         return !name.isEmpty() && Character.isLetter(name.charAt(0)) && !name.equals("name") && !name.equals("ID");
     }
 
+    /** A built-in's model from the catalogue; the application's as its file declares it, else its ports as inputs. */
     private void model(String id, Node node) {
         Map<String, String> attributes = Map.of("ID", id);
         Map<String, String> ports = new TreeMap<>();
-        builtin(node).ifPresentOrElse(model -> model.ports(4).forEach(p -> ports.put(p.name(), direction(p.direction()))),
-                () -> node.ports().attributes().keySet().stream().filter(GrootTreeXml::isPortName)
-                        .forEach(p -> ports.put(p, "input_port")));
-        open(elementOf(node.kind()), attributes, 2, ports.isEmpty());
+        DeclaredModels.Model model = declared.get(id);
+        String kind = model != null ? model.kind() : elementOf(node.kind());
+        if (builtin(node).isPresent()) {
+            builtin(node).get().ports(4).forEach(p -> ports.put(p.name(), direction(p.direction())));
+        } else if (model != null) {
+            ports.putAll(model.ports());
+        } else {
+            node.ports().attributes().keySet().stream().filter(GrootTreeXml::isPortName).forEach(p -> ports.put(p, "input_port"));
+        }
+        open(kind, attributes, 2, ports.isEmpty());
         ports.forEach((name, element) -> open(element, Map.of("name", name), 3, true));
         if (!ports.isEmpty()) {
-            out.append("        </").append(elementOf(node.kind())).append(">\n");
+            out.append("        </").append(kind).append(">\n");
         }
     }
 

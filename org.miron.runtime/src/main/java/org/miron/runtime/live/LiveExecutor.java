@@ -35,6 +35,7 @@ public final class LiveExecutor implements AutoCloseable {
     private DecisionFeed feed;
     private Tree tree;
     private GrootServer groot;
+    private Path treeFile;
 
     public LiveExecutor(Endpoints endpoints) {
         this.endpoints = endpoints;
@@ -55,6 +56,7 @@ public final class LiveExecutor implements AutoCloseable {
     public LiveExecutor build(Path treeFile, StatusListener trace) {
         skills = new ZmqSkillClient(endpoints.request(), endpoints.skillEvents(), 2000, deadlines);
         registry.registerVariantAction(variants).setFallback(new SkillActionStrategy(skills));
+        this.treeFile = treeFile;
         tree = new TreeBuilder(registry, new TreeContext()).build(treeFile);
         if (trace != null) {
             tree.addListener(trace);
@@ -77,7 +79,7 @@ public final class LiveExecutor implements AutoCloseable {
         if (tree == null) {
             throw new IllegalStateException("build the tree before serving Groot2");
         }
-        groot = GrootServer.start(tree, port);
+        groot = GrootServer.start(tree, port, treeFile);
         return this;
     }
 
