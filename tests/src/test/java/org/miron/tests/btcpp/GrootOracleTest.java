@@ -291,7 +291,12 @@ public class GrootOracleTest {
         List<List<byte[]>> statuses = both('S');
         assertEquals(statusUids(statuses.get(0).get(1)), statusUids(statuses.get(1).get(1)));
         assertSame("unlock", both('U', "{\"uid\":3,\"position\":0,\"desired_status\":\"SKIPPED\",\"remove_when_done\":true}"));
+        // the tick thread removes the hook once it goes on, after the reply: wait for it on both
         JsonNode[] dumps = dumps();
+        for (int i = 0; i < 50 && (dumps[0].size() > 0 || dumps[1].size() > 0); i++) {
+            Thread.sleep(20);
+            dumps = dumps();
+        }
         assertEquals("[]", dumps[0].toString());
         assertEquals(dumps[0], dumps[1]);
     }
@@ -327,7 +332,46 @@ public class GrootOracleTest {
         for (String name : fieldNames(library)) {
             assertEquals(name, fieldNames(library.get(name)), fieldNames(ours.get(name)));
         }
+        assertEquals("the values too (text, as the tree's ports are)", library, ours);
         assertSame("nothing found", both('B', "nope"));
+    }
+
+    @Test
+    public void withoutRequestsForFiveSecondsBothDisableTheirHooksAndTheNextRequestEnablesThem() throws Exception {
+        assertSame("insert", both('I', hook(3, 0, 0, "SKIPPED", false)));
+        assertNotNull(library.awaitNotice(5000));
+        assertNotNull(ours.awaitNotice(5000));
+        // Groot2 goes quiet: after the library's 5 s both trees go on, without a notice
+        Thread.sleep(5600);
+        library.drainNotices();
+        ours.drainNotices();
+        assertNull("BT.CPP: hooks disabled", library.awaitNotice(300));
+        assertNull("ours: hooks disabled", ours.awaitNotice(10));
+        JsonNode[] dumps = dumps(); // a request: Groot2 is back
+        assertEquals(dumps[0].get(0).path("uid"), dumps[1].get(0).path("uid"));
+        assertNotNull("BT.CPP: enabled again", library.awaitNotice(5000));
+        assertNotNull("ours: enabled again", ours.awaitNotice(5000));
+        assertSame("remove all", both('A'));
+    }
+
+    @Test
+    public void recordingAnswersAsTheLibrary() throws Exception {
+        List<List<byte[]>> started = both('r', "start");
+        assertEquals(2, started.get(0).size());
+        assertEquals(started.get(0).size(), started.get(1).size());
+        long libraryClock = Long.parseLong(text(started.get(0).get(1)));
+        long ourClock = Long.parseLong(text(started.get(1).get(1)));
+        assertTrue("both send the wall clock in microseconds", Math.abs(libraryClock - ourClock) < 5_000_000);
+        engine.publishRetained("task", "miron.variant.task",
+                "{\"varpoint\":\"task\",\"value\":\"dock\",\"seq\":2,\"time\":" + System.currentTimeMillis() + "}");
+        Thread.sleep(1000);
+        List<List<byte[]>> transitions = both('t');
+        for (List<byte[]> reply : transitions) {
+            assertEquals(2, reply.size());
+            assertTrue("transitions recorded: " + reply.get(1).length, reply.get(1).length > 0);
+            assertEquals(0, reply.get(1).length % 9);
+        }
+        assertSame("stop", both('r', "stop"));
     }
 
     private static List<String> fieldNames(JsonNode object) {
