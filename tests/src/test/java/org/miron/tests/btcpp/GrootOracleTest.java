@@ -216,6 +216,23 @@ public class GrootOracleTest {
         assertEquals(2, replies.get(0).size());
         assertEquals(replies.get(0).get(1).length, replies.get(1).get(1).length);
         assertEquals(statusUids(replies.get(0).get(1)), statusUids(replies.get(1).get(1)));
+        // both trees settle in the same place (MoveTo on the deliver branch, a minute long): the
+        // same statuses, IDLE-after-a-status included
+        long end = System.currentTimeMillis() + 10_000;
+        do {
+            Thread.sleep(100);
+            replies = both('S');
+        } while (!Arrays.equals(replies.get(0).get(1), replies.get(1).get(1)) && System.currentTimeMillis() < end);
+        assertEquals(statuses(replies.get(0).get(1)), statuses(replies.get(1).get(1)));
+    }
+
+    private static Map<Integer, Integer> statuses(byte[] snapshot) {
+        ByteBuffer in = ByteBuffer.wrap(snapshot).order(ByteOrder.LITTLE_ENDIAN);
+        Map<Integer, Integer> statuses = new TreeMap<>();
+        while (in.remaining() >= 3) {
+            statuses.put(in.getShort() & 0xFFFF, (int) in.get());
+        }
+        return statuses;
     }
 
     private static String hook(int uid, int mode, int position, String desired, boolean once) {
