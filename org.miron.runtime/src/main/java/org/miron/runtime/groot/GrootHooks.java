@@ -90,7 +90,15 @@ final class GrootHooks implements TickHook {
         }
         GrootHook hook = new GrootHook(json.uid());
         hook.update(json);
-        hooks.put(json.uid(), hook);
+        GrootHook replaced = hooks.put(json.uid(), hook);
+        if (replaced != null) {
+            // a POST insert replaces the node's PRE hook; a tick waiting on that one would wait for
+            // ever in the library (nothing can reach it any more): here it goes on
+            synchronized (replaced) {
+                replaced.enabled = false;
+                replaced.notifyAll();
+            }
+        }
     }
 
     /** BREAKPOINT_UNLOCK: false (the library's "Node ID not found") when there is no such node or hook. */

@@ -277,6 +277,18 @@ public class GrootServerTest {
     }
 
     @Test
+    public void aPostHookReplacingAPausedBreakpointLetsTheTreeGoOn() throws Exception {
+        start("main.xml");
+        ask('I', hook(5, 0, 0, "SKIPPED", false));
+        Future<NodeStatus> run = ticking.submit(tree::tickRoot);
+        assertNotNull(client.awaitNotice(5000));
+        ask('I', hook(5, 1, 1, "FAILURE", false)); // POST: not found as such, so a new hook takes the node
+        assertEquals("the old breakpoint let its tick go: inner ticked", NodeStatus.SUCCESS, run.get(5, TimeUnit.SECONDS));
+        assertEquals(1, dump().get(0).path("position").asInt());
+        assertEquals("the new hook (a REPLACE, asked before the tick) forces FAILURE", NodeStatus.FAILURE, tree.tickRoot());
+    }
+
+    @Test
     public void withoutRequestsTheHeartbeatDisablesTheHooksAndTheNextRequestEnablesThem() throws Exception {
         start("main.xml");
         server.heartbeatDelay(Duration.ofMillis(400));
