@@ -115,6 +115,11 @@ public class DemoCommand implements Callable<Integer> {
                     + "and metrics) on http://127.0.0.1:PORT/ while the demo runs (docs/diagrams.md)")
     Integer monitorPort;
 
+    @Option(names = "--groot", paramLabel = "PORT",
+            description = "serve Groot2's protocol for the running tree on 127.0.0.1:PORT and PORT+1, as BehaviorTree.CPP 4's "
+                    + "Groot2Publisher does (breakpoints, status, blackboards; docs/bt-semantics.md, \"Groot2\")")
+    Integer grootPort;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -251,8 +256,10 @@ public class DemoCommand implements Callable<Integer> {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
                     out, endpoints, console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
                     .world(liveWorld, worldMs).requirements(requirements)
-                    .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).run();
+                    .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).groot(grootPort).run();
         } catch (EngineStartException e) {
+            return usage("miron demo: error: " + e.getMessage());
+        } catch (Demo.GrootBindException e) {
             return usage("miron demo: error: " + e.getMessage());
         } catch (java.net.BindException e) {
             return usage("miron demo: error: cannot serve the monitor on 127.0.0.1:" + monitorPort + ": " + e.getMessage());

@@ -65,6 +65,11 @@ public final class ExecuteCommand implements Callable<Integer> {
                     + "metrics) on http://127.0.0.1:PORT/ while the tree runs (docs/diagrams.md)")
     Integer monitorPort;
 
+    @Option(names = "--groot", paramLabel = "PORT",
+            description = "serve Groot2's protocol for the tree on 127.0.0.1:PORT and PORT+1, as BehaviorTree.CPP 4's "
+                    + "Groot2Publisher does: the tree with uids, statuses, blackboards, breakpoints (docs/bt-semantics.md, \"Groot2\")")
+    Integer grootPort;
+
     @Override
     public Integer call() {
         if (!Files.isRegularFile(treeFile)) {
@@ -94,6 +99,15 @@ public final class ExecuteCommand implements Callable<Integer> {
             } catch (BtBuildException e) {
                 System.err.println("miron execute: error: " + e.getMessage());
                 return 2;
+            }
+            if (grootPort != null) {
+                try {
+                    executor.serveGroot(grootPort);
+                } catch (RuntimeException e) {
+                    System.err.println("miron execute: error: cannot serve Groot2 on 127.0.0.1:" + grootPort + ": " + e.getMessage());
+                    return 2;
+                }
+                System.out.println("groot2: 127.0.0.1:" + grootPort + " (publisher " + (grootPort + 1) + ")");
             }
             CountDownLatch finished = new CountDownLatch(1);
             Thread hook = new Thread(() -> {

@@ -98,10 +98,20 @@ public class DemoCommandTest {
      * engine deciding with the reference backend (MiniZinc) instead of the default native one.
      */
     @Test
-    public void theDemoRunsTheSameOnTheVersion4TreeAndWithMiniZinc() throws Exception {
-        String told = runDemo(4, "--bt-format", "4", "--backend", "minizinc");
+    public void theDemoRunsTheSameOnTheVersion4TreeAndWithMiniZincAndServesGroot2() throws Exception {
+        int port = org.miron.testkit.runtime.GrootClient.freePortPair();
+        java.util.concurrent.CompletableFuture<String> tree = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+            try (org.miron.testkit.runtime.GrootClient groot = new org.miron.testkit.runtime.GrootClient(port)) {
+                List<byte[]> reply = groot.requestUntilAnswered('T', 60_000);
+                return reply == null ? "no reply" : org.miron.testkit.runtime.GrootClient.text(reply.get(1));
+            }
+        });
+        String told = runDemo(4, "--bt-format", "4", "--backend", "minizinc", "--groot", Integer.toString(port));
         assertTrue(told, told.contains("intralogistics.ext.xml runs as BehaviorTree.CPP 4; the engine decides "
                 + "with the minizinc backend."));
+        assertTrue(told, told.contains("MIRoN demo: Groot2 can connect to 127.0.0.1:" + port));
+        String xml = tree.get(10, java.util.concurrent.TimeUnit.SECONDS);
+        assertTrue(xml, xml.contains("<VariantAction name=\"VariantAction\" _uid=\"3\""));
     }
 
     @Test

@@ -1,6 +1,7 @@
 package org.miron.executor;
 
 import java.util.List;
+import org.miron.bt.nodes.NodeKind;
 
 /**
  * A runtime node: BehaviorTree.CPP's TreeNode. The parent calls {@link #executeTick()}, which runs
@@ -12,6 +13,9 @@ public abstract class Node {
     private volatile NodeStatus status = NodeStatus.IDLE;
     /** Version-4 pre/post-conditions; null in a version-3 tree, which has none. */
     private Conditions conditions;
+    /** The registration name and kind BehaviorTree.CPP would give it (the builder sets them; monitors read them). */
+    private String element;
+    private NodeKind kind;
 
     protected Node(NodeInfo info) {
         this.info = info;
@@ -24,6 +28,10 @@ public abstract class Node {
      */
     public final NodeStatus executeTick() {
         NodeStatus result = conditions == null ? null : conditions.before(this);
+        if (result == null && !status.isCompleted()) {
+            // as BT.CPP's pre-tick callback: asked only when no pre-condition decided and the node has not finished
+            result = info.context().beforeTick(this);
+        }
         if (result == null) {
             result = tick();
         }
@@ -49,6 +57,29 @@ public abstract class Node {
     /** Makes this a version-4 node with these pre/post-conditions (the builder calls it once). */
     final void useConditions(Conditions conditions) {
         this.conditions = conditions;
+    }
+
+    /** Records what the node was built from (the builder calls it once). */
+    final void useElement(String element, NodeKind kind) {
+        this.element = element;
+        this.kind = kind;
+    }
+
+    /**
+     * The name BehaviorTree.CPP registers this node under: the tag of a built-in ({@code Sequence}),
+     * the ID of an action or user node ({@code Pick}), {@code SubTree} for a subtree call; its name
+     * when built by hand.
+     */
+    public final String element() {
+        return element != null ? element : name();
+    }
+
+    /** The node's kind as in a TreeNodesModel; ACTION when built by hand and not a control or decorator. */
+    public final NodeKind kind() {
+        if (kind != null) {
+            return kind;
+        }
+        return this instanceof ControlNode ? NodeKind.CONTROL : this instanceof DecoratorNode ? NodeKind.DECORATOR : NodeKind.ACTION;
     }
 
     /** True in a version-4 tree (BTCPP_format="4"). */

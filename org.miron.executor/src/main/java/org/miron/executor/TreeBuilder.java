@@ -131,6 +131,7 @@ public final class TreeBuilder {
             V4Nodes.declarePorts(info); // a SubTree's attributes remap, they declare nothing (as BT.CPP 4)
         }
         Node built = make(node, info, blackboard, stack);
+        built.useElement(registrationName(node, built), kindOf(node, built));
         if (v4 != null) {
             built.useConditions(v4.conditions(node, path));
         }
@@ -318,6 +319,32 @@ public final class TreeBuilder {
             attributes.putIfAbsent(attribute.getName(), attribute.getValue() == null ? "" : attribute.getValue());
         }
         return attributes;
+    }
+
+    /** As BehaviorTree.CPP's registrationName: SubTree, the ID of an explicit-form node, else the tag. */
+    private static String registrationName(TreeNode node, Node built) {
+        if (built instanceof SubTreeNode) {
+            return "SubTree";
+        }
+        boolean explicit = NodeCatalogue.find(node.getTag()).map(NodeModel::explicitForm).orElse(false);
+        String id = node.attribute(ID);
+        return explicit && id != null && !id.isBlank() ? id : node.getTag();
+    }
+
+    private NodeKind kindOf(TreeNode node, Node built) {
+        if (built instanceof SubTreeNode) {
+            return NodeKind.SUBTREE;
+        }
+        if (built instanceof ControlNode) {
+            return NodeKind.CONTROL;
+        }
+        if (built instanceof DecoratorNode) {
+            return NodeKind.DECORATOR;
+        }
+        NodeModel model = BuiltinFactories.builtin(node.getTag(), version())
+                .or(() -> NodeCatalogue.find(node.getTag())).orElse(null);
+        return node instanceof Condition || model != null && model.kind() == NodeKind.CONDITION ? NodeKind.CONDITION
+                : NodeKind.ACTION;
     }
 
     /** The name attribute, else what identifies the node: the action ID, the tree ID, the tag. */

@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 import org.miron.executor.trace.StatusListener;
+import org.miron.executor.trace.TickHook;
 
 /** What every node of one tree shares: the clock, the status listeners and the loop guard. */
 public final class TreeContext {
@@ -19,6 +20,7 @@ public final class TreeContext {
     private final List<StatusListener> listeners = new CopyOnWriteArrayList<>();
     private volatile boolean wakeUp;
     private volatile Consumer<String> problems = System.err::println;
+    private volatile TickHook tickHook;
 
     public TreeContext() {
         this(MillisClock.SYSTEM, DEFAULT_MAX_LOOPS_PER_TICK);
@@ -71,6 +73,21 @@ public final class TreeContext {
     /** Reports one line through {@link #onProblem}. */
     public void reportProblem(String line) {
         problems.accept(line);
+    }
+
+    /** Sets (null: removes) the hook asked before each node's tick; one at a time. */
+    public void setTickHook(TickHook hook) {
+        tickHook = hook;
+    }
+
+    /** The hook's decision for this node (null: tick it), or null without a hook. */
+    NodeStatus beforeTick(Node node) {
+        TickHook hook = tickHook;
+        if (hook == null) {
+            return null;
+        }
+        NodeStatus decided = hook.beforeTick(node);
+        return decided != null && decided.isCompleted() ? decided : null;
     }
 
     public void addListener(StatusListener listener) {

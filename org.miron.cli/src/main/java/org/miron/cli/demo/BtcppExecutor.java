@@ -27,6 +27,12 @@ final class BtcppExecutor implements AutoCloseable {
     private Process process;
     private Thread reader;
 
+    /** Attaches BehaviorTree.CPP's Groot2Publisher on this port (and the next); before {@link #start}. */
+    BtcppExecutor groot(int port) {
+        command.addAll(List.of("--groot", Integer.toString(port)));
+        return this;
+    }
+
     BtcppExecutor(Path runner, Path tree, Endpoints endpoints, Narrator narrator, BusRecorder clock) {
         command.addAll(List.of(runner.toString(), tree.toString(), "--bus", endpoints.busOut(), "--skill-requests",
                 endpoints.request(), "--skill-results", endpoints.skillEvents(), "--period", "50", "--repeat"));

@@ -58,6 +58,7 @@ public final class Demo {
     private long periodMs = 1000;
     private ModelNames names = ModelNames.none();
     private Integer monitorPort;
+    private Integer grootPort;
     private Path btcppRunner;
     private LiveWorld world;
     private long worldMs;
@@ -118,6 +119,19 @@ public final class Demo {
     /** How the model names its inputs, for the report and the live page. */
     public Demo names(ModelNames modelNames) {
         this.names = modelNames;
+        return this;
+    }
+
+    /** Groot2's ports could not be bound. */
+    public static final class GrootBindException extends RuntimeException {
+        GrootBindException(String message) {
+            super(message);
+        }
+    }
+
+    /** Serves Groot2's protocol for the running tree on 127.0.0.1:port and port + 1 (null: none). */
+    public Demo groot(Integer port) {
+        this.grootPort = port;
         return this;
     }
 
@@ -202,6 +216,14 @@ public final class Demo {
         AtomicInteger missions = new AtomicInteger();
         AtomicBoolean scenarioOver = new AtomicBoolean();
         try (LiveExecutor executor = new LiveExecutor(endpoints).build(tree, narrator)) {
+            if (grootPort != null) {
+                try {
+                    executor.serveGroot(grootPort);
+                } catch (RuntimeException e) {
+                    throw new GrootBindException("cannot serve Groot2 on 127.0.0.1:" + grootPort + ": " + e.getMessage());
+                }
+                out.println("MIRoN demo: Groot2 can connect to 127.0.0.1:" + grootPort + " (and " + (grootPort + 1) + ")");
+            }
             out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs as BehaviorTree.CPP "
                     + executor.tree().formatVersion() + "; the engine decides with the " + engine.backendName()
                     + " backend.");
@@ -229,6 +251,10 @@ public final class Demo {
     private int runOnBtcpp(Engine engine, LiveProvider provider, Narrator narrator, BusRecorder recorder,
             ScenarioPlayer player) throws InterruptedException, java.io.IOException, EngineStartException {
         try (BtcppExecutor executor = new BtcppExecutor(btcppRunner, tree, endpoints, narrator, recorder)) {
+            if (grootPort != null) {
+                executor.groot(grootPort); // BehaviorTree.CPP's own Groot2Publisher
+                out.println("MIRoN demo: Groot2 can connect to 127.0.0.1:" + grootPort + " (and " + (grootPort + 1) + ")");
+            }
             out.println("MIRoN demo: the behaviour tree " + tree.getFileName() + " runs on the real BehaviorTree.CPP 4 "
                     + "(miron-btcpp-run with the MIRoN plugin); the engine decides with the " + engine.backendName()
                     + " backend.");

@@ -15,6 +15,7 @@ import org.miron.executor.skills.VariantSource;
 import org.miron.executor.trace.StatusListener;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.bus.Topics;
+import org.miron.runtime.groot.GrootServer;
 import org.miron.runtime.skill.SkillDeadlines;
 import org.miron.runtime.skill.ZmqSkillClient;
 
@@ -33,6 +34,8 @@ public final class LiveExecutor implements AutoCloseable {
     private ZmqSkillClient skills;
     private DecisionFeed feed;
     private Tree tree;
+    private GrootServer groot;
+    private Path treeFile;
 
     public LiveExecutor(Endpoints endpoints) {
         this.endpoints = endpoints;
@@ -53,6 +56,7 @@ public final class LiveExecutor implements AutoCloseable {
     public LiveExecutor build(Path treeFile, StatusListener trace) {
         skills = new ZmqSkillClient(endpoints.request(), endpoints.skillEvents(), 2000, deadlines);
         registry.registerVariantAction(variants).setFallback(new SkillActionStrategy(skills));
+        this.treeFile = treeFile;
         tree = new TreeBuilder(registry, new TreeContext()).build(treeFile);
         if (trace != null) {
             tree.addListener(trace);
@@ -65,6 +69,23 @@ public final class LiveExecutor implements AutoCloseable {
         feed.publishRetained(Topics.BT_TREE, statuses.treeMessage(treeFile.toAbsolutePath().toString()));
         tree.addListener(statuses);
         return this;
+    }
+
+    /**
+     * Serves Groot2's protocol for the built tree on 127.0.0.1:port (and port + 1), as BT.CPP's
+     * Groot2Publisher does (org.miron.runtime.groot); call it after {@link #build}, before running.
+     */
+    public LiveExecutor serveGroot(int port) {
+        if (tree == null) {
+            throw new IllegalStateException("build the tree before serving Groot2");
+        }
+        groot = GrootServer.start(tree, port, treeFile);
+        return this;
+    }
+
+    /** The Groot2 server, or null without {@link #serveGroot}. */
+    public GrootServer groot() {
+        return groot;
     }
 
     /**
@@ -102,6 +123,9 @@ public final class LiveExecutor implements AutoCloseable {
 
     /** Ends a {@link #run} from another thread (it halts the tree, aborting running skills). */
     public void stop() {
+        if (groot != null) {
+            groot.close(); // a tree paused at a breakpoint goes on, so it can see the stop
+        }
         if (tree != null) {
             tree.stop();
         }
