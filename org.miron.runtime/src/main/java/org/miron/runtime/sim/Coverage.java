@@ -45,7 +45,7 @@ public final class Coverage {
 
     /** The sum of runs of one setup (the same items); null for no runs. */
     public static Coverage merge(List<Coverage> runs) {
-        if (runs.isEmpty() || runs.contains(null)) {
+        if (runs.isEmpty()) {
             return null;
         }
         Coverage first = runs.get(0);

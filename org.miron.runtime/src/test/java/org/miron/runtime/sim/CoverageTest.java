@@ -44,8 +44,10 @@ public class CoverageTest {
     private static final VariationPoint TASK = new VariationPoint("task", "enum", List.of(TextNode.valueOf("pick"),
             TextNode.valueOf("dock")), 0, "task_d", null, null, null, null, null);
 
+    private int files;
+
     private Coverage run(int missions) throws Exception {
-        Path file = tmp.newFile().toPath();
+        Path file = tmp.newFile("tiny" + files++ + ".xml").toPath();
         Files.writeString(file, TREE);
         long[] now = { 0 };
         Tree tree = Setup.buildTree(file, new TreeContext(() -> now[0]), new VariantSource(), spec -> {
