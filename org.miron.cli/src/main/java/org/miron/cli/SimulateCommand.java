@@ -17,6 +17,8 @@ import org.miron.runtime.sim.Durations;
 import org.miron.runtime.sim.Policy;
 import org.miron.runtime.sim.Setup;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -34,7 +36,8 @@ import picocli.CommandLine.Spec;
                 + "policies: adaptive (the model), preset (nothing adapts), fixed:vp=value,... Writes OUT/summary.json "
                 + "and OUT/report.html.",
         exitCodeListHeading = "Exit codes:%n",
-        exitCodeList = { "0:simulated", "1:the model or the world file has errors", "2:usage error" })
+        exitCodeList = { "0:simulated", "1:the model or the world file has errors, or a policy's coverage is below --min-coverage",
+            "2:usage error" })
 public class SimulateCommand implements Callable<Integer> {
     @Mixin
     SimulationOptions run = new SimulationOptions();
@@ -76,6 +79,9 @@ public class SimulateCommand implements Callable<Integer> {
         if (runs < 1 || durationMs <= 0) {
             return usage("--runs and --duration must be positive");
         }
+        if (CoverageOutput.check(run) != null) {
+            return usage(CoverageOutput.check(run));
+        }
         if (!Files.isRegularFile(run.model) || !Files.isRegularFile(run.world)) {
             return usage((Files.isRegularFile(run.model) ? run.world : run.model) + ": error: no such file");
         }
@@ -106,11 +112,13 @@ public class SimulateCommand implements Callable<Integer> {
         for (String problem : Comparison.problems(results)) {
             console.println("world: " + problem);
         }
+        ObjectNode summary = Comparison.summary(results, runs, run.seed, durationMs);
+        boolean covered = CoverageOutput.report(run, Comparison.coverage(results), console, err, "simulate", summary);
         Files.createDirectories(out);
         Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
-                .writeValueAsString(Comparison.summary(results, runs, run.seed, durationMs)) + "\n", StandardCharsets.UTF_8);
+                .writeValueAsString(summary) + "\n", StandardCharsets.UTF_8);
         new SimulationReport(run.model.getFileName() + " in " + run.world.getFileName(), results, setup.world(), timelineMs)
-                .write(out.resolve("report.html"));
+                .coverage(run.coverage() ? Comparison.coverage(results) : null).write(out.resolve("report.html"));
         console.println("  summary: " + out.resolve("summary.json"));
         console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
         console.flush();
@@ -118,7 +126,7 @@ public class SimulateCommand implements Callable<Integer> {
         err.printf(java.util.Locale.ROOT, "miron simulate: %.0f s simulated in %.1f s on %d thread(s) (%.0fx real time)%n",
                 simulated, wall, cores, simulated / Math.max(wall, 1e-9));
         err.flush();
-        return 0;
+        return covered ? 0 : 1;
     }
 
     private int usage(String message) {

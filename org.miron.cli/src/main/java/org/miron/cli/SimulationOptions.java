@@ -5,7 +5,7 @@ import java.nio.file.Path;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
-/** The options `miron simulate` and `miron verify` share (a picocli mixin): the model, its world, the runs' length, seeds and threads. */
+/** The options `miron simulate` and `miron verify` share (a picocli mixin): the model, its world, the runs' length, seeds, threads and coverage. */
 final class SimulationOptions {
     @Parameters(index = "0", paramLabel = "MODEL.miron", description = "the MIRoN model")
     Path model;
@@ -23,6 +23,20 @@ final class SimulationOptions {
 
     @Option(names = "--threads", paramLabel = "N", description = "parallel runs (default: the number of cores)")
     Integer threads;
+
+    @Option(names = "--coverage",
+            description = "also report, over each policy's runs, how often every node of the woven tree ran and ended SUCCESS/FAILURE, "
+                    + "each enum variant's share of time and how often each rule applied (docs/simulator.md, \"Coverage\")")
+    boolean coverage;
+
+    @Option(names = "--min-coverage", paramLabel = "PCT",
+            description = "exit 1 when a policy's runs cover less than PCT % of those items (implies --coverage)")
+    Double minCoverage;
+
+    /** Whether the coverage is reported: asked for, or needed by the gate. */
+    boolean coverage() {
+        return coverage || minCoverage != null;
+    }
 
     int cores() {
         return threads != null ? Math.max(1, threads) : Runtime.getRuntime().availableProcessors();

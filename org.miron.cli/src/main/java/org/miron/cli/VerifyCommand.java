@@ -18,6 +18,8 @@ import org.miron.runtime.sim.Policy;
 import org.miron.runtime.sim.Setup;
 import org.miron.runtime.sim.Verification;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -36,7 +38,8 @@ import picocli.CommandLine.Spec;
                 + "OUT/summary.json and OUT/report.html.",
         exitCodeListHeading = "Exit codes:%n",
         exitCodeList = { "0:every requirement holds in every run of every policy (a probabilistic one: the test says it holds)",
-            "1:a requirement is violated, a probabilistic one fails or stays undecided, or one was never evaluated",
+            "1:a requirement is violated, a probabilistic one fails or stays undecided, or one was never evaluated; "
+                    + "or a policy's coverage is below --min-coverage",
             "2:usage error, a model with errors or without requirements" })
 public class VerifyCommand implements Callable<Integer> {
     @Mixin
@@ -97,6 +100,9 @@ public class VerifyCommand implements Callable<Integer> {
         if (!(indifference > 0 && indifference < 0.5)) {
             return usage("miron verify: error: --indifference must lie in (0, 0.5), e.g. 0.05");
         }
+        if (CoverageOutput.check(run) != null) {
+            return usage("miron verify: error: " + CoverageOutput.check(run));
+        }
         if (!Files.isRegularFile(run.model) || !Files.isRegularFile(run.world)) {
             return usage((Files.isRegularFile(run.model) ? run.world : run.model) + ": error: no such file");
         }
@@ -139,18 +145,21 @@ public class VerifyCommand implements Callable<Integer> {
         console.println("(P(violation): the share of runs that violated the requirement, with its exact 95 % interval "
                 + "(Clopper-Pearson); probabilistic requirements by Wald's SPRT, alpha = beta = "
                 + String.format(Locale.ROOT, "%.3g", 1 - options.confidence()) + ", indifference +/- " + indifference + ")");
+        ObjectNode summary = Verification.summary(results, options);
+        boolean covered = CoverageOutput.report(run, Verification.coverage(results), console, err, "verify", summary);
         Files.createDirectories(out);
         Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
-                .writeValueAsString(Verification.summary(results, options)) + "\n", StandardCharsets.UTF_8);
+                .writeValueAsString(summary) + "\n", StandardCharsets.UTF_8);
         new VerifyReport(run.model.getFileName() + " in " + run.world.getFileName(), setup, results, options,
-                ModelNames.of(run.model.toFile())).write(out.resolve("report.html"));
+                ModelNames.of(run.model.toFile())).coverage(run.coverage() ? Verification.coverage(results) : null)
+                .write(out.resolve("report.html"));
         console.println("  summary: " + out.resolve("summary.json"));
         console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
         console.flush();
         int total = results.stream().mapToInt(r -> r.runs().size()).sum();
         err.printf(Locale.ROOT, "miron verify: %d run(s) of %s in %.1f s on %d thread(s)%n", total, run.duration, wall, cores);
         err.flush();
-        return Verification.allHold(results) ? 0 : 1;
+        return Verification.allHold(results) && covered ? 0 : 1;
     }
 
     private int usage(String message) {

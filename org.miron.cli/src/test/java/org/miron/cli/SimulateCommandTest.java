@@ -90,4 +90,44 @@ public class SimulateCommandTest {
         assertTrue(cli.err.toString(), cli.err.toString().contains("no varpoint 'speed'"));
         assertEquals(2, new Cli().run("simulate", MODEL.toString(), "--world", WORLD.toString(), "--policy", "fast"));
     }
+
+    /**
+     * --coverage on the example (issue 36, item 4): a line per tree node, variant and rule, a column
+     * per policy, the summary's coverage object, the report's table; --min-coverage exits 1 for the
+     * policy that falls short and names it, 0 when every policy reaches it.
+     */
+    @Test
+    public void coverageAndItsGate() throws Exception {
+        Path a = tmp.getRoot().toPath().resolve("cov");
+        String[] args = { "simulate", MODEL.toString(), "--world", WORLD.toString(), "--duration", "30m", "--runs", "2", "--seed", "1",
+            "--policy", "adaptive", "--policy", "fixed:task=deliver", "--out", a.toString(), "--timeline", "1m", "--coverage" };
+        Cli cli = new Cli();
+        assertEquals(cli.err.toString(), 0, cli.run(args));
+        String o = cli.out();
+        assertTrue(o, o.matches("(?s).*\ncoverage  item +adaptive +fixed:task=deliver\n.*"));
+        assertTrue(o, o.matches("(?s).*\nnode      Main/monitoring_parallel +100\\.0 %  ticked \\d+, S \\d+, F \\d+ +100\\.0 %.*"));
+        assertTrue(o, o.matches("(?s).*\nvariant   task::deliver +\\d+\\.\\d % +100\\.0 %\n.*"));
+        assertTrue(o, o.matches("(?s).*\nrule      noBattery +\\d+\\.\\d %  \\d+ of \\d+ decisions +0\\.0 %  0 of 0 decisions\n.*"));
+        assertTrue(o, o.matches("(?s).*\n +covered +\\d+ of \\d+ \\(\\d+\\.\\d %\\) +\\d+ of \\d+ \\(\\d+\\.\\d %\\)\n.*"));
+        JsonNode coverage = Json.MAPPER.readTree(a.resolve("summary.json").toFile()).path("coverage");
+        double adaptive = coverage.path("adaptive").path("share").asDouble();
+        double deliver = coverage.path("fixed:task=deliver").path("share").asDouble(); // its branch has fewer nodes
+        assertTrue(coverage.toString(), deliver < adaptive && adaptive <= 1);
+        JsonNode variants = coverage.path("adaptive").path("variants");
+        double time = 0;
+        for (JsonNode v : variants) {
+            time += v.path("heldS").asDouble();
+        }
+        assertEquals("task has a value all the time", 2 * 1800, time, 1e-6);
+        assertTrue(Files.readString(a.resolve("report.html")).contains("<h2>Coverage</h2>"));
+        args[args.length - 1] = "--min-coverage=" + 50 * (adaptive + deliver); // between the two
+        Cli gated = new Cli();
+        assertEquals(gated.err.toString(), 1, gated.run(args));
+        assertTrue(gated.err.toString(), gated.err.toString().contains("miron simulate: coverage of fixed:task=deliver is "));
+        assertFalse(gated.err.toString(), gated.err.toString().contains("coverage of adaptive"));
+        args[args.length - 1] = "--min-coverage=" + (100 * deliver - 0.01);
+        assertEquals(0, new Cli().run(args));
+        args[args.length - 1] = "--min-coverage=101";
+        assertEquals(2, new Cli().run(args));
+    }
 }

@@ -157,4 +157,27 @@ public class VerifyCommandTest {
         Files.writeString(model, text.substring(0, from) + requirements);
         return model;
     }
+
+    /** --coverage in miron verify: the table after the requirements', the summary's coverage against the schema, the gate. */
+    @Test
+    public void coverageOfTheVerifiedRunsAndItsGate() throws Exception {
+        Path model = Cli.ROOT.resolve("examples/intralogistics/intralogistics.miron");
+        String[] args = { "verify", model.toString(), "--world", WORLD.toString(), "--duration", "30m", "--runs", "1", "--seed", "1",
+            "--out", out("c").toString(), "--coverage" };
+        Cli cli = new Cli();
+        int status = cli.run(args);
+        assertEquals("as without --coverage: slowNearPeople is violated", 1, status);
+        assertTrue(cli.out(), cli.out().matches("(?s).*\ncoverage  item +adaptive\n.*\nrule      noBattery .*"));
+        JsonNode summary = Json.MAPPER.readTree(out("c").resolve("summary.json").toFile());
+        assertEquals(List.of(), JsonSchemaFile.VERIFY_SUMMARY.problems(summary));
+        JsonNode adaptive = summary.path("coverage").path("adaptive");
+        assertTrue(adaptive.toString(), adaptive.path("covered").asInt() > 0 && adaptive.path("nodes").size() > 5);
+        ((com.fasterxml.jackson.databind.node.ObjectNode) adaptive).put("extra", 1);
+        assertEquals("the schema is strict", 1, JsonSchemaFile.VERIFY_SUMMARY.problems(summary).size());
+        assertTrue(Files.readString(out("c").resolve("report.html")).contains("<h2>Coverage</h2>"));
+        args[args.length - 1] = "--min-coverage=100";
+        Cli gated = new Cli();
+        assertEquals(1, gated.run(args));
+        assertTrue(gated.err.toString(), gated.err.toString().contains("miron verify: coverage of adaptive is "));
+    }
 }

@@ -18,6 +18,8 @@ public final class TreeContext {
     private final MillisClock clock;
     private final int maxLoopsPerTick;
     private final List<StatusListener> listeners = new CopyOnWriteArrayList<>();
+    /** The listeners as an array, replaced on change: a status change iterates without allocating (the simulator's coverage listens to every one). */
+    private volatile StatusListener[] listening = new StatusListener[0];
     private volatile boolean wakeUp;
     private volatile Consumer<String> problems = System.err::println;
     private volatile TickHook tickHook;
@@ -90,20 +92,23 @@ public final class TreeContext {
         return decided != null && decided.isCompleted() ? decided : null;
     }
 
-    public void addListener(StatusListener listener) {
+    public synchronized void addListener(StatusListener listener) {
         listeners.add(listener);
+        listening = listeners.toArray(new StatusListener[0]);
     }
 
-    public void removeListener(StatusListener listener) {
+    public synchronized void removeListener(StatusListener listener) {
         listeners.remove(listener);
+        listening = listeners.toArray(new StatusListener[0]);
     }
 
     void fireStatusChanged(Node node, NodeStatus from, NodeStatus to) {
-        if (listeners.isEmpty()) {
+        StatusListener[] all = listening;
+        if (all.length == 0) {
             return;
         }
         long now = clock.nowMillis();
-        for (StatusListener listener : listeners) {
+        for (StatusListener listener : all) {
             try {
                 listener.statusChanged(now, node, from, to);
             } catch (RuntimeException e) {

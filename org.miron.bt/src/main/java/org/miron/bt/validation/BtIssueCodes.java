@@ -167,6 +167,12 @@ public final class BtIssueCodes {
     public static final String SCRIPT_ASSIGNMENT_TARGET = "bt.script-assignment-target";
     /** A string literal used with an arithmetic or bitwise operator (fails on every tick). */
     public static final String SCRIPT_TYPE_MISMATCH = "bt.script-type-mismatch";
+    /**
+     * A version-4 attribute starting with '_' that is no pre/post-condition but nearly one
+     * ({@code _onSucess}, {@code _skipif}): BT.CPP 4 ignores it, so its script never runs (a warning).
+     * Data: the condition names it may mean, nearest first.
+     */
+    public static final String CONDITION_TYPO = "bt.condition-typo";
 
     // ------------------------------------------------------------------ conversion (miron convert)
 

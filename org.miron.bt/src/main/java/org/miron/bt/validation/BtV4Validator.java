@@ -25,6 +25,7 @@ import org.miron.bt.script.ScriptChecks;
 import org.miron.bt.script.ScriptSyntaxError;
 import org.miron.bt.util.BtAttributes;
 import org.miron.bt.util.BtFormats;
+import org.miron.bt.util.Suggestions;
 
 /**
  * The rules BehaviorTree.CPP 4 applies when it loads a version-4 file: the ports its built-ins
@@ -64,6 +65,29 @@ public class BtV4Validator extends AbstractDeclarativeValidator {
         for (Attribute attribute : node.getAttributes()) {
             if (BtVersions.SCRIPT_DIRECTIVES.contains(attribute.getName())) {
                 checkScript(attribute);
+            }
+        }
+    }
+
+    /**
+     * An attribute BT.CPP 4 takes for a port remapping while its author meant a pre/post-condition
+     * ({@code _onSucess}, {@code _skipif}): the library ignores it silently, so the script never runs.
+     */
+    @Check
+    public void checkConditionNames(TreeNode node) {
+        if (!isV4(node)) {
+            return;
+        }
+        for (Attribute attribute : node.getAttributes()) {
+            String name = attribute.getName();
+            if (name == null || !name.startsWith("_") || BtVersions.SCRIPT_DIRECTIVES.contains(name)
+                    || BtVersions.OTHER_UNDERSCORE_ATTRIBUTES.contains(name)) {
+                continue;
+            }
+            List<String> near = Suggestions.closest(name, BtVersions.SCRIPT_DIRECTIVES);
+            if (!near.isEmpty()) {
+                warning("BehaviorTree.CPP 4 ignores attribute '" + name + "', no pre/post-condition: did you mean '"
+                        + near.get(0) + "'?", attribute, BT.getAttribute_Name(), CONDITION_TYPO, near.toArray(new String[0]));
             }
         }
     }

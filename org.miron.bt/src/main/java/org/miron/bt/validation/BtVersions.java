@@ -19,6 +19,9 @@ public final class BtVersions {
     public static final List<String> SCRIPT_DIRECTIVES = List.of("_successIf", "_failureIf", "_skipIf", "_while",
             "_onSuccess", "_onFailure", "_onHalted", "_post");
 
+    /** The other attributes starting with '_' that BT.CPP 4 or Groot2 give a meaning: no mistyped pre/post-condition. */
+    public static final Set<String> OTHER_UNDERSCORE_ATTRIBUTES = Set.of("_autoremap", "_description", "_uid", "_fullpath");
+
     /** Built-in tags BT.CPP 4 added, with the version-3 tag that means the same, or "" when none does (from the catalogue). */
     public static final Map<String, String> V4_ONLY_TAGS = NodeCatalogue.onlyIn(NodeCatalogue.V4);
 

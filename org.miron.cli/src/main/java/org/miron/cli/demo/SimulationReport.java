@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.miron.runtime.sim.Comparison;
+import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Simulation;
 import org.miron.runtime.sim.Statistics;
 import org.miron.runtime.sim.TimelineEvent;
@@ -30,13 +31,21 @@ public final class SimulationReport {
         this.timelineMs = timelineMs;
     }
 
+    private List<CoverageTable.Column> coverage;
+
+    /** Adds the coverage section (null: none). */
+    public SimulationReport coverage(List<CoverageTable.Column> columns) {
+        this.coverage = columns;
+        return this;
+    }
+
     public Path write(Path file) throws IOException {
         return TimelineReport.writePage(file, html());
     }
 
     String html() {
         StringBuilder out = new StringBuilder();
-        out.append(TimelineReport.pageHead("MIRoN simulation: " + title, ".bars{display:flex;flex-wrap:wrap;gap:1em}"))
+        out.append(TimelineReport.pageHead("MIRoN simulation: " + title, ".bars{display:flex;flex-wrap:wrap;gap:1em}" + CoverageSection.STYLE))
                 .append("<h1>MIRoN simulation: ").append(TimelineReport.escape(title)).append("</h1>\n");
         int runs = results.isEmpty() ? 0 : results.get(0).runs().size();
         out.append("<p>").append(runs).append(" run(s) per policy; bars are means, whiskers 95 % confidence intervals.</p>\n");
@@ -45,6 +54,7 @@ public final class SimulationReport {
             out.append(bars(m));
         }
         out.append("</div>\n");
+        out.append(CoverageSection.html(coverage));
         for (Comparison.PolicyRuns r : results) {
             Simulation.Result first = r.runs().get(0);
             out.append("<h2>Policy ").append(TimelineReport.escape(r.policy().name())).append(": the first ")

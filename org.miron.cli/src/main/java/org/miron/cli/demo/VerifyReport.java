@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import org.miron.cli.ModelNames;
 import org.miron.runtime.requirement.RequirementEvent;
+import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Setup;
 import org.miron.runtime.sim.Simulation;
 import org.miron.runtime.sim.TimelineEvent;
@@ -39,6 +40,14 @@ public final class VerifyReport {
         this.names = names;
     }
 
+    private List<CoverageTable.Column> coverage;
+
+    /** Adds the coverage section (null: none). */
+    public VerifyReport coverage(List<CoverageTable.Column> columns) {
+        this.coverage = columns;
+        return this;
+    }
+
     public Path write(Path file) throws IOException {
         return TimelineReport.writePage(file, html());
     }
@@ -46,7 +55,7 @@ public final class VerifyReport {
     String html() {
         StringBuilder out = new StringBuilder();
         out.append(TimelineReport.pageHead("MIRoN verification: " + title, ".holds{color:#2ca02c}.violated,.fails{color:#d62728}"
-                + ".undecided,.not-evaluated{color:#ff7f0e}code{font-size:13px}"))
+                + ".undecided,.not-evaluated{color:#ff7f0e}code{font-size:13px}" + CoverageSection.STYLE))
                 .append("<h1>MIRoN verification: ").append(TimelineReport.escape(title)).append("</h1>\n");
         out.append("<p>Each run is ").append(TimelineReport.escape(duration(options.durationMs())))
                 .append(" of simulated time; P(violation) is the share of runs that violated the requirement with its exact 95 % "
@@ -68,6 +77,7 @@ public final class VerifyReport {
             }
         }
         out.append("</table>\n");
+        out.append(CoverageSection.html(coverage));
         for (Verification.PolicyResult r : results) {
             for (Verification.Check c : r.checks()) {
                 if (c.first() != null) {

@@ -168,6 +168,13 @@ public class CodeActionLspTest {
     }
 
     @Test
+    public void mistypedConditionIsRenamed() throws Exception {
+        String fixed = fix("v4.bt", tree(" BTCPP_format=\"4\"", "<AlwaysSuccess _onSucess=\"done := true\"/>"),
+                "bt.condition-typo", "Change to _onSuccess");
+        assertTrue(fixed, fixed.contains("<AlwaysSuccess _onSuccess=\"done := true\"/>"));
+    }
+
+    @Test
     public void parallelPortOfTheOtherVersionIsRenamed() throws Exception {
         String fixed = fix("v4.bt", tree(" BTCPP_format=\"4\"",
                 "<Parallel success_threshold=\"1\"><AlwaysSuccess/><AlwaysSuccess/></Parallel>"),

@@ -63,6 +63,11 @@ public final class Comparison {
         }
     }
 
+    /** Each policy's coverage, its runs merged. */
+    public static List<CoverageTable.Column> coverage(List<PolicyRuns> results) {
+        return CoverageTable.of(results);
+    }
+
     /** The measures' names in order: the world's, then the metrics' means and the run counters. */
     public static List<String> measureNames(List<PolicyRuns> results) {
         Set<String> names = new LinkedHashSet<>();

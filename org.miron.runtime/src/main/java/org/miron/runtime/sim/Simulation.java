@@ -45,10 +45,11 @@ import org.miron.runtime.sim.WorldModel.Publication;
 public final class Simulation {
     /**
      * What a run measured; {@code timeline}: what it recorded for the report (empty unless asked);
-     * {@code requirements}: each requirement's result over the run (empty when none is checked).
+     * {@code requirements}: each requirement's result over the run (empty when none is checked);
+     * {@code coverage}: the nodes, variants and rules the run exercised.
      */
     public record Result(Map<String, Double> measures, List<String> problems, List<TimelineEvent> timeline,
-            List<RequirementResult> requirements) {
+            List<RequirementResult> requirements, Coverage coverage) {
     }
 
     private static final int MAX_STEPS_PER_INSTANT = 1000;
@@ -69,6 +70,7 @@ public final class Simulation {
     private final VariantSource blackboard = new VariantSource();
     private final Tree tree;
     private final Measures measures;
+    private final CoverageRecorder coverage;
     private final Map<String, InputSpec> engineContexts = new HashMap<>();
     private final Map<String, InputSpec> engineMetrics = new HashMap<>();
     private final Map<String, RoqmeModel.Variable> contexts = new HashMap<>();
@@ -106,6 +108,8 @@ public final class Simulation {
         context.onProblem(world::problem); // e.g. a skill not pushed for a port nothing wrote: said once in the results
         this.tree = Setup.buildTree(setup.tree(), context, variants, new SkillActionStrategy(world::push));
         tree.feedBlackboardFrom(blackboard);
+        coverage = new CoverageRecorder(tree, setup.io());
+        tree.addListener(coverage);
         for (InputSpec in : setup.io().inputs()) {
             (in.isMetric() ? engineMetrics : engineContexts).put(in.name(), in);
         }
@@ -177,6 +181,12 @@ public final class Simulation {
         driver.start(0);
         if (decider == null) {
             policy.configuration(setup.io()).forEach((vp, index) -> apply(vp, vp.values().get(index)));
+        } else {
+            for (VariationPoint vp : setup.io().varpoints()) { // the values the robot starts with, until a decision changes them
+                if (decider.applied().get(vp.name()) instanceof JsonNode v) {
+                    coverage.varpoint(vp, v, 0);
+                }
+            }
         }
         instant();
         int sameInstant = 0;
@@ -216,7 +226,7 @@ public final class Simulation {
         out.put("engine:adaptations", (double) adaptations);
         out.put("engine:solveFailures", (double) solveFailures);
         List<RequirementResult> checked = monitors == null ? List.of() : monitors.finish(durationMs);
-        return new Result(out, List.copyOf(world.problems()), timeline, checked);
+        return new Result(out, List.copyOf(world.problems()), timeline, checked, coverage.finish(durationMs));
     }
 
     private long wallStart = -1;
@@ -276,6 +286,8 @@ public final class Simulation {
             Decider.Outcome o = decider.decide(snap, now);
             if (!o.result().solved()) {
                 solveFailures++; // the last configuration stays, as in the engine; the run goes on
+            } else {
+                coverage.decision(o.entry().path("applied"));
             }
             for (Decider.Change c : o.changes()) {
                 apply(c.varpoint(), c.value());
@@ -290,6 +302,7 @@ public final class Simulation {
             return;
         }
         restartAt = -1;
+        coverage.beforeRootTick();
         NodeStatus status = tree.tickRoot();
         if (status == NodeStatus.SUCCESS) {
             succeeded++;
@@ -316,6 +329,7 @@ public final class Simulation {
 
     /** A decision reaches the robot: a behaviour variant, a blackboard value or a component parameter. */
     private void apply(VariationPoint vp, JsonNode value) {
+        coverage.varpoint(vp, value, now);
         if (monitors != null) {
             monitors.varpoint(now, vp.name(), value);
         }

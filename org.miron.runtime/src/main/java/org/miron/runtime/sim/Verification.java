@@ -166,6 +166,11 @@ public final class Verification {
         return new Check(req, runs.size(), violated, open, notEvaluated, ci, verdict, first, sprt);
     }
 
+    /** Each policy's coverage over the runs it made (a sequential check: as many as its test needed). */
+    public static List<CoverageTable.Column> coverage(List<PolicyResult> results) {
+        return CoverageTable.of(results.stream().map(r -> new Comparison.PolicyRuns(r.policy(), r.runs())).toList());
+    }
+
     /** True when every requirement holds under every policy. */
     public static boolean allHold(List<PolicyResult> results) {
         return results.stream().allMatch(r -> r.checks().stream().allMatch(Check::holds));

@@ -51,6 +51,7 @@ public class IssueDataCodeActions implements ICodeActionService2 {
             Map.entry("bt.unknown-main-tree", Fix.REPLACE),
             Map.entry("bt.unknown-reference", Fix.REPLACE),
             Map.entry("bt.missing-include", Fix.ADD_INCLUDE),
+            Map.entry("bt.condition-typo", Fix.REPLACE),
             Map.entry("roqme.unknown-reference", Fix.REPLACE),
             Map.entry("miron.requirement-unknown-name", Fix.REPLACE),
             Map.entry("roqme.missing-import", Fix.ADD_IMPORT),
