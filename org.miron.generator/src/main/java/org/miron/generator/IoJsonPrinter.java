@@ -1,14 +1,18 @@
 package org.miron.generator;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.ArrayDeque;
 import java.util.Deque;
 
 import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.JsonStreamContext;
 import com.fasterxml.jackson.core.util.DefaultIndenter;
 import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
 import com.fasterxml.jackson.core.util.Separators;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * Jackson's pretty printer with two-space indentation, '\n' on every platform and `"key": value`,
@@ -17,6 +21,7 @@ import com.fasterxml.jackson.core.util.Separators;
  */
 final class IoJsonPrinter extends DefaultPrettyPrinter {
     private static final long serialVersionUID = 1L;
+    private static final ObjectMapper MAPPER = new ObjectMapper().enable(JsonGenerator.Feature.WRITE_BIGDECIMAL_AS_PLAIN);
 
     /** Per open array: whether it holds objects (then its closing bracket goes on a new line). */
     private final Deque<Boolean> arrays = new ArrayDeque<>();
@@ -24,6 +29,15 @@ final class IoJsonPrinter extends DefaultPrettyPrinter {
     IoJsonPrinter() {
         super(Separators.createDefaultInstance().withObjectFieldValueSpacing(Separators.Spacing.AFTER));
         indentObjectsWith(new DefaultIndenter("  ", "\n"));
+    }
+
+    /** A generated JSON file's text (io.json, requirements.json, roqme.json): the tree in this layout, numbers plain, a final newline. */
+    static String print(JsonNode tree) {
+        try {
+            return MAPPER.writer(new IoJsonPrinter()).writeValueAsString(tree) + "\n";
+        } catch (JsonProcessingException e) {
+            throw new UncheckedIOException(e); // a tree of plain nodes always serializes
+        }
     }
 
     private IoJsonPrinter(IoJsonPrinter base) {

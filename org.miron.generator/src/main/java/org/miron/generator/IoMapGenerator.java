@@ -1,13 +1,9 @@
 package org.miron.generator;
 
-import com.fasterxml.jackson.core.JsonGenerator;
-import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.UncheckedIOException;
 import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
@@ -38,14 +34,9 @@ import org.miron.dsl.util.Types;
  */
 public class IoMapGenerator {
     private static final JsonNodeFactory JSON = JsonNodeFactory.instance;
-    private static final ObjectMapper MAPPER = new ObjectMapper().enable(JsonGenerator.Feature.WRITE_BIGDECIMAL_AS_PLAIN);
 
     public String generate(AdaptationModel m) {
-        try {
-            return MAPPER.writer(new IoJsonPrinter()).writeValueAsString(tree(m)) + "\n";
-        } catch (JsonProcessingException e) {
-            throw new UncheckedIOException(e); // a tree of plain nodes always serializes
-        }
+        return IoJsonPrinter.print(tree(m));
     }
 
     public ObjectNode tree(AdaptationModel m) {

@@ -34,7 +34,7 @@ final class RoqmeJsonText {
         ObjectNode copy = root.deepCopy();
         try {
             inline(copy);
-            return MAPPER.writer(new IoJsonPrinter()).writeValueAsString(copy) + "\n";
+            return IoJsonPrinter.print(copy);
         } catch (JsonProcessingException e) {
             throw new IllegalStateException("a JSON tree always serializes", e);
         }
