@@ -9,7 +9,6 @@ import org.miron.runtime.sim.Comparison;
 import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Simulation;
 import org.miron.runtime.sim.Statistics;
-import org.miron.runtime.sim.TimelineEvent;
 import org.miron.runtime.sim.WorldModel;
 
 /**
@@ -59,14 +58,7 @@ public final class SimulationReport {
             Simulation.Result first = r.runs().get(0);
             out.append("<h2>Policy ").append(TimelineReport.escape(r.policy().name())).append(": the first ")
                     .append(Math.round(timelineMs / 60000.0)).append(" min of run 1</h2>\n");
-            List<BusRecorder.Event> events = new ArrayList<>();
-            for (TimelineEvent e : first.timeline()) {
-                events.add(new BusRecorder.Event(e.at(), e.topic(), e.body()));
-            }
-            String page = new TimelineReport(r.policy().name(), events, timelineMs).html();
-            int from = page.indexOf("</h1>");
-            int to = page.lastIndexOf("</body>");
-            out.append(from >= 0 && to > from ? page.substring(from + "</h1>".length(), to) : "");
+            out.append(new TimelineReport(r.policy().name(), TimelineReport.events(first.timeline()), timelineMs).body());
         }
         return out.append("</body></html>\n").toString();
     }

@@ -12,6 +12,7 @@ import java.util.Locale;
 import java.util.Map;
 import org.miron.cli.ModelNames;
 import org.miron.runtime.bus.Topics;
+import org.miron.runtime.sim.TimelineEvent;
 
 /**
  * A self-contained HTML page (inline SVG, no scripts) that shows why the robot adapted: the QoS
@@ -220,6 +221,23 @@ public final class TimelineReport {
                 + "</title>\n<style>body{font-family:sans-serif;margin:2em;color:#222}h2{margin-top:1.5em}"
                 + "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;text-align:left;"
                 + "font-size:13px}svg text{font-size:12px}" + style + "</style></head><body>\n";
+    }
+
+    /** A simulated run's timeline (the simulator records it, docs/simulator.md) as the events a report draws. */
+    public static List<BusRecorder.Event> events(List<TimelineEvent> timeline) {
+        List<BusRecorder.Event> events = new ArrayList<>();
+        for (TimelineEvent e : timeline) {
+            events.add(new BusRecorder.Event(e.at(), e.topic(), e.body()));
+        }
+        return events;
+    }
+
+    /** The report without its page head and title: a section of another page (simulation, verification). */
+    String body() {
+        String page = html();
+        int from = page.indexOf("</h1>");
+        int to = page.lastIndexOf("</body>");
+        return from >= 0 && to > from ? page.substring(from + "</h1>".length(), to) : "";
     }
 
     String html() {

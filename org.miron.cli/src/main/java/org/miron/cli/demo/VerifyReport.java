@@ -2,7 +2,6 @@ package org.miron.cli.demo;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import org.miron.cli.ModelNames;
@@ -10,7 +9,6 @@ import org.miron.runtime.requirement.RequirementEvent;
 import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Setup;
 import org.miron.runtime.sim.Simulation;
-import org.miron.runtime.sim.TimelineEvent;
 import org.miron.runtime.sim.Verification;
 
 /**
@@ -93,20 +91,14 @@ public final class VerifyReport {
         long from = Math.max(0, x.timeMs() - BEFORE_MS);
         long to = Math.min(options.durationMs(), Math.max(x.detectedMs(), x.timeMs()) + AFTER_MS);
         Simulation.Result again = new Simulation(setup, r.policy(), x.seed(), options.durationMs(), to).timelineWindow(from).run();
-        List<BusRecorder.Event> events = new ArrayList<>();
-        for (TimelineEvent e : again.timeline()) {
-            events.add(new BusRecorder.Event(e.at(), e.topic(), e.body()));
-        }
-        String page = new TimelineReport(c.requirement().name(), events, from, to, names).html();
-        int start = page.indexOf("</h1>");
-        int end = page.lastIndexOf("</body>");
+        String timeline = new TimelineReport(c.requirement().name(), TimelineReport.events(again.timeline()), from, to, names).body();
         return "<h2 id=\"" + anchor(c, r) + "\">" + TimelineReport.escape(c.requirement().name()) + " under "
                 + TimelineReport.escape(r.policy().name()) + ": run " + x.run() + " (seed " + x.seed() + ") violated it at "
                 + RequirementEvent.seconds(x.timeMs()) + " s</h2>\n<p><code>" + TimelineReport.escape(c.requirement().text())
                 + "</code></p>\n<p>Values then: " + TimelineReport.escape(RequirementEvent.format(x.values()))
                 + (x.detectedMs() > x.timeMs() ? "; known at " + RequirementEvent.seconds(x.detectedMs()) + " s" : "")
                 + ". The timeline shows " + RequirementEvent.seconds(from) + " s to " + RequirementEvent.seconds(to) + " s.</p>\n"
-                + (start >= 0 && end > start ? page.substring(start + "</h1>".length(), end) : "");
+                + timeline;
     }
 
     private static String anchor(Verification.Check c, Verification.PolicyResult r) {
