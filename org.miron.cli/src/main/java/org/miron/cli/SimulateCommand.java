@@ -1,8 +1,6 @@
 package org.miron.cli;
 
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -11,8 +9,8 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import org.miron.cli.demo.SimulationReport;
-import org.miron.runtime.Json;
 import org.miron.runtime.sim.Comparison;
+import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Durations;
 import org.miron.runtime.sim.Policy;
 import org.miron.runtime.sim.Setup;
@@ -66,24 +64,23 @@ public class SimulateCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         long durationMs;
         long timelineMs;
-        List<Policy> parsed = new ArrayList<>();
+        List<Policy> parsed;
         try {
             durationMs = Durations.parseMs(run.duration);
             timelineMs = Durations.parseMs(timeline);
-            for (String p : policies.isEmpty() ? List.of("adaptive", "preset") : policies) {
-                parsed.add(Policy.parse(p));
-            }
+            parsed = SimulationOptions.policies(policies, List.of("adaptive", "preset"));
         } catch (IllegalArgumentException e) {
             return usage(e.getMessage());
         }
         if (runs < 1 || durationMs <= 0) {
             return usage("--runs and --duration must be positive");
         }
-        if (CoverageOutput.check(run) != null) {
-            return usage(CoverageOutput.check(run));
+        String wrong = CoverageOutput.check(run);
+        if (wrong != null) {
+            return usage(wrong);
         }
-        if (!Files.isRegularFile(run.model) || !Files.isRegularFile(run.world)) {
-            return usage((Files.isRegularFile(run.model) ? run.world : run.model) + ": error: no such file");
+        if (run.missingFile() != null) {
+            return usage(run.missingFile());
         }
         SimulationModel.Loaded loaded = SimulationModel.load(run.model, run.world, out, parsed, err, "simulate", 1);
         if (loaded.setup() == null) {
@@ -92,7 +89,7 @@ public class SimulateCommand implements Callable<Integer> {
         Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
         Setup setup = loaded.setup();
         int cores = run.cores();
-        console.println("MIRoN simulate: " + run.model.getFileName() + " in " + run.world.getFileName() + ", " + runs + " run(s) of "
+        console.println("MIRoN simulate: " + run.title() + ", " + runs + " run(s) of "
                 + run.duration + " per policy, seed " + run.seed);
         console.flush();
         long started = System.nanoTime();
@@ -113,15 +110,12 @@ public class SimulateCommand implements Callable<Integer> {
             console.println("world: " + problem);
         }
         ObjectNode summary = Comparison.summary(results, runs, run.seed, durationMs);
-        boolean covered = CoverageOutput.report(run, Comparison.coverage(results), console, err, "simulate", summary);
-        Files.createDirectories(out);
-        Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
-                .writeValueAsString(summary) + "\n", StandardCharsets.UTF_8);
-        new SimulationReport(run.model.getFileName() + " in " + run.world.getFileName(), results, setup.world(), timelineMs)
-                .coverage(run.coverage() ? Comparison.coverage(results) : null).write(out.resolve("report.html"));
-        console.println("  summary: " + out.resolve("summary.json"));
-        console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
-        console.flush();
+        List<CoverageTable.Column> coverage = Comparison.coverage(results);
+        boolean covered = CoverageOutput.report(run, coverage, console, err, "simulate", summary);
+        SimulationModel.writeSummary(out, summary);
+        new SimulationReport(run.title(), results, setup.world(), timelineMs)
+                .coverage(run.coverage() ? coverage : null).write(out.resolve("report.html"));
+        SimulationModel.printWritten(out, console);
         double simulated = durationMs / 1000.0 * runs * parsed.size();
         err.printf(java.util.Locale.ROOT, "miron simulate: %.0f s simulated in %.1f s on %d thread(s) (%.0fx real time)%n",
                 simulated, wall, cores, simulated / Math.max(wall, 1e-9));

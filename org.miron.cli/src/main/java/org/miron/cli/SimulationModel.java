@@ -3,11 +3,14 @@ package org.miron.cli;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import org.miron.generator.RoqmeRuntimeModel;
+import org.miron.runtime.Json;
 import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.requirement.RequirementModel;
 import org.miron.runtime.roqme.model.ModelException;
@@ -32,6 +35,20 @@ final class SimulationModel {
     }
 
     private SimulationModel() {
+    }
+
+    /** Writes OUT/summary.json, pretty-printed with a final newline. */
+    static void writeSummary(Path out, JsonNode summary) throws IOException {
+        Files.createDirectories(out);
+        Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
+                .writeValueAsString(summary) + "\n", StandardCharsets.UTF_8);
+    }
+
+    /** Says on the console where the summary and the report are. */
+    static void printWritten(Path out, PrintWriter console) {
+        console.println("  summary: " + out.resolve("summary.json"));
+        console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
+        console.flush();
     }
 
     /**

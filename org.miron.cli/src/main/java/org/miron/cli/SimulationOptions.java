@@ -1,6 +1,11 @@
 package org.miron.cli;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.miron.runtime.sim.Policy;
 
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -36,6 +41,26 @@ final class SimulationOptions {
     /** Whether the coverage is reported: asked for, or needed by the gate. */
     boolean coverage() {
         return coverage || minCoverage != null;
+    }
+
+    /** The policies named with --policy, or these defaults; a bad one is an IllegalArgumentException naming it. */
+    static List<Policy> policies(List<String> named, List<String> defaults) {
+        List<Policy> parsed = new ArrayList<>();
+        for (String p : named.isEmpty() ? defaults : named) {
+            parsed.add(Policy.parse(p));
+        }
+        return parsed;
+    }
+
+    /** {@code FILE: error: no such file} for the model or the world when one is missing, else null. */
+    String missingFile() {
+        return !Files.isRegularFile(model) ? model + ": error: no such file"
+                : !Files.isRegularFile(world) ? world + ": error: no such file" : null;
+    }
+
+    /** {@code intralogistics.miron in world.json}: what the console, the reports and their titles call the run. */
+    String title() {
+        return model.getFileName() + " in " + world.getFileName();
     }
 
     int cores() {

@@ -1,8 +1,6 @@
 package org.miron.cli;
 
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -12,7 +10,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 
 import org.miron.cli.demo.VerifyReport;
-import org.miron.runtime.Json;
+import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Durations;
 import org.miron.runtime.sim.Policy;
 import org.miron.runtime.sim.Setup;
@@ -78,12 +76,10 @@ public class VerifyCommand implements Callable<Integer> {
         PrintWriter console = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         long durationMs;
-        List<Policy> parsed = new ArrayList<>();
+        List<Policy> parsed;
         try {
             durationMs = Durations.parseMs(run.duration);
-            for (String p : policies.isEmpty() ? List.of("adaptive") : policies) {
-                parsed.add(Policy.parse(p));
-            }
+            parsed = SimulationOptions.policies(policies, List.of("adaptive"));
         } catch (IllegalArgumentException e) {
             return usage(e.getMessage());
         }
@@ -100,11 +96,12 @@ public class VerifyCommand implements Callable<Integer> {
         if (!(indifference > 0 && indifference < 0.5)) {
             return usage("miron verify: error: --indifference must lie in (0, 0.5), e.g. 0.05");
         }
-        if (CoverageOutput.check(run) != null) {
-            return usage("miron verify: error: " + CoverageOutput.check(run));
+        String wrong = CoverageOutput.check(run);
+        if (wrong != null) {
+            return usage("miron verify: error: " + wrong);
         }
-        if (!Files.isRegularFile(run.model) || !Files.isRegularFile(run.world)) {
-            return usage((Files.isRegularFile(run.model) ? run.world : run.model) + ": error: no such file");
+        if (run.missingFile() != null) {
+            return usage(run.missingFile());
         }
         SimulationModel.Loaded loaded = SimulationModel.load(run.model, run.world, out, parsed, err, "verify", 2);
         if (loaded.setup() == null) {
@@ -124,7 +121,7 @@ public class VerifyCommand implements Callable<Integer> {
         Verification.Options options = new Verification.Options(sequential ? 0 : runs == null ? 10 : runs, maxRuns,
                 confidence == null ? 0.95 : confidence, indifference, run.seed, durationMs, cores);
         Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
-        console.println("MIRoN verify: " + run.model.getFileName() + " in " + run.world.getFileName() + ", "
+        console.println("MIRoN verify: " + run.title() + ", "
                 + setup.requirements().requirements().size() + " requirement(s), "
                 + (sequential ? "runs of " + run.duration + " until the sequential test decides (at most " + maxRuns + ")"
                         : options.runs() + " run(s) of " + run.duration) + " per policy, seed " + run.seed);
@@ -146,16 +143,12 @@ public class VerifyCommand implements Callable<Integer> {
                 + "(Clopper-Pearson); probabilistic requirements by Wald's SPRT, alpha = beta = "
                 + String.format(Locale.ROOT, "%.3g", 1 - options.confidence()) + ", indifference +/- " + indifference + ")");
         ObjectNode summary = Verification.summary(results, options);
-        boolean covered = CoverageOutput.report(run, Verification.coverage(results), console, err, "verify", summary);
-        Files.createDirectories(out);
-        Files.writeString(out.resolve("summary.json"), Json.MAPPER.writerWithDefaultPrettyPrinter()
-                .writeValueAsString(summary) + "\n", StandardCharsets.UTF_8);
-        new VerifyReport(run.model.getFileName() + " in " + run.world.getFileName(), setup, results, options,
-                ModelNames.of(run.model.toFile())).coverage(run.coverage() ? Verification.coverage(results) : null)
-                .write(out.resolve("report.html"));
-        console.println("  summary: " + out.resolve("summary.json"));
-        console.println("  report:  " + out.resolve("report.html") + "   (open it in a browser)");
-        console.flush();
+        List<CoverageTable.Column> coverage = Verification.coverage(results);
+        boolean covered = CoverageOutput.report(run, coverage, console, err, "verify", summary);
+        SimulationModel.writeSummary(out, summary);
+        new VerifyReport(run.title(), setup, results, options, ModelNames.of(run.model.toFile()))
+                .coverage(run.coverage() ? coverage : null).write(out.resolve("report.html"));
+        SimulationModel.printWritten(out, console);
         int total = results.stream().mapToInt(r -> r.runs().size()).sum();
         err.printf(Locale.ROOT, "miron verify: %d run(s) of %s in %.1f s on %d thread(s)%n", total, run.duration, wall, cores);
         err.flush();
