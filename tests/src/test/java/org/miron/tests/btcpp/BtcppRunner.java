@@ -1,5 +1,6 @@
 package org.miron.tests.btcpp;
 
+import static org.junit.Assert.assertEquals;
 import static org.junit.Assume.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -13,6 +14,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
+import org.miron.cli.MironCli;
 import org.miron.runtime.Json;
 import org.miron.testkit.RepositoryRoot;
 
@@ -31,6 +33,12 @@ final class BtcppRunner implements AutoCloseable {
     static void assumeBuilt() {
         assumeTrue("miron-btcpp-run not built (scripts/ensure-btcpp-plugin.sh says why): " + EXECUTABLE,
                 Files.isExecutable(EXECUTABLE));
+    }
+
+    /** Weaves examples/EXAMPLE (e.g. {@code intralogistics/intralogistics.miron}) as a version-4 tree into {@code out}. */
+    static void weaveV4(Path out, String example) {
+        assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", out.toString(),
+                RepositoryRoot.path().resolve("examples/" + example).toString()));
     }
 
     BtcppRunner(List<String> arguments) throws IOException {

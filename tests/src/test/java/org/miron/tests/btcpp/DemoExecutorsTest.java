@@ -16,7 +16,6 @@ import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.cli.MironCli;
 import org.miron.cli.demo.Demo;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
@@ -46,8 +45,7 @@ public class DemoExecutorsTest {
     public static void weave() throws Exception {
         BtcppRunner.assumeBuilt();
         generated = temp.newFolder("model").toPath();
-        assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", generated.toString(),
-                RepositoryRoot.path().resolve("examples/intralogistics/intralogistics.miron").toString()));
+        BtcppRunner.weaveV4(generated, "intralogistics/intralogistics.miron");
     }
 
     /** One demo run. (A class, not a record: Gradle 4.4's test scanner does not read records.) */

@@ -29,7 +29,6 @@ import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.cli.MironCli;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
 import org.miron.runtime.broker.Broker;
@@ -37,7 +36,6 @@ import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.live.LiveExecutor;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
-import org.miron.testkit.RepositoryRoot;
 import org.miron.testkit.runtime.GrootClient;
 import org.w3c.dom.Element;
 import org.w3c.dom.NamedNodeMap;
@@ -70,8 +68,7 @@ public class GrootOracleTest {
     public static void weave() throws Exception {
         BtcppRunner.assumeBuilt();
         Path out = temp.newFolder("woven").toPath();
-        assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", out.toString(),
-                RepositoryRoot.path().resolve("examples/intralogistics/intralogistics.miron").toString()));
+        BtcppRunner.weaveV4(out, "intralogistics/intralogistics.miron");
         tree = out.resolve("intralogistics.ext.xml");
     }
 

@@ -14,14 +14,12 @@ import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.cli.MironCli;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.Json;
 import org.miron.runtime.broker.Broker;
 import org.miron.runtime.bus.BusClient;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
-import org.miron.testkit.RepositoryRoot;
 
 /**
  * miron-btcpp-run (real BehaviorTree.CPP 4.8.2 with the MIRoN plugin) on the woven intralogistics
@@ -47,11 +45,9 @@ public class LiveWireTest {
     public static void weave() throws Exception {
         BtcppRunner.assumeBuilt();
         Path out = temp.newFolder("woven").toPath();
-        assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", out.toString(),
-                RepositoryRoot.path().resolve("examples/intralogistics/intralogistics.miron").toString()));
+        BtcppRunner.weaveV4(out, "intralogistics/intralogistics.miron");
         tree = out.resolve("intralogistics.ext.xml");
-        assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", out.toString(),
-                RepositoryRoot.path().resolve("examples/hospital-delivery/hospital.miron").toString()));
+        BtcppRunner.weaveV4(out, "hospital-delivery/hospital.miron");
         hospital = out.resolve("hospital.ext.xml");
     }
 

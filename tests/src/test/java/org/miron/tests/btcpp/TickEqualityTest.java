@@ -15,7 +15,6 @@ import org.junit.BeforeClass;
 import org.junit.ClassRule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.miron.cli.MironCli;
 import org.miron.executor.ActionRegistry;
 import org.miron.executor.AsyncAction;
 import org.miron.executor.AsyncActionNode;
@@ -27,7 +26,6 @@ import org.miron.executor.TreeContext;
 import org.miron.executor.scripting.ScriptValues;
 import org.miron.executor.skills.VariantSource;
 import org.miron.runtime.Json;
-import org.miron.testkit.RepositoryRoot;
 
 /**
  * The woven examples (v4 weaving) tick by tick on both executors, with scripted action results
@@ -46,8 +44,7 @@ public class TickEqualityTest {
         BtcppRunner.assumeBuilt();
         woven = temp.newFolder("woven").toPath();
         for (String model : List.of("intralogistics/intralogistics.miron", "hospital-delivery/hospital.miron")) {
-            assertEquals(0, MironCli.run("generate", "--bt-format", "4", "-o", woven.toString(),
-                    RepositoryRoot.path().resolve("examples/" + model).toString()));
+            BtcppRunner.weaveV4(woven, model);
         }
     }
 
