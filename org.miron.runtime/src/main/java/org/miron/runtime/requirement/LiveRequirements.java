@@ -289,11 +289,6 @@ public final class LiveRequirements implements AutoCloseable {
         }
     }
 
-    /** Every event told so far; safe to read once {@link #finish} returned. */
-    public List<RequirementEvent> events() {
-        return monitors.events();
-    }
-
     public long contextsIn() {
         return contextsIn.get();
     }

@@ -30,7 +30,6 @@ public final class RequirementMonitors {
     private final Map<String, List<Integer>> contexts = new HashMap<>();
     private final Map<String, List<Integer>> properties = new HashMap<>();
     private final Map<String, List<Integer>> varpoints = new HashMap<>();
-    private final List<RequirementEvent> told = new ArrayList<>();
     private Consumer<RequirementEvent> listener = e -> {
     };
     private long now;
@@ -64,7 +63,6 @@ public final class RequirementMonitors {
             }
         }
         pool = new ExpressionPool(params, vps, tables.toArray(new double[0][]));
-        Map<String, Integer> signalOfParam = params;
         Map<String, Integer> signalOfVarpoint = new HashMap<>();
         for (int i = 0; i < signals.defs.length; i++) {
             if (signals.defs[i].isVarpoint()) {
@@ -79,11 +77,11 @@ public final class RequirementMonitors {
                 FormulaNode body = null;
                 long until = Eventually.UNBOUNDED;
                 if (op.equals("always") || op.equals("never")) {
-                    FormulaNode arg = compile(only(f), own, signalOfParam, signalOfVarpoint);
+                    FormulaNode arg = compile(only(f), own, params, signalOfVarpoint);
                     body = op.equals("always") ? arg : new Combination(Combination.Op.NOT, arg, null);
                     until = within(f);
                 }
-                FormulaNode root = body != null ? null : compile(f, own, signalOfParam, signalOfVarpoint);
+                FormulaNode root = body != null ? null : compile(f, own, params, signalOfVarpoint);
                 Set<Integer> reads = new LinkedHashSet<>();
                 for (String name : r.reads()) {
                     reads.add(indexOf(name));
@@ -311,7 +309,7 @@ public final class RequirementMonitors {
         signals.at(now);
         long keep = Long.MAX_VALUE;
         for (RequirementMonitor m : monitors) {
-            m.update(now, signals, this::tell);
+            m.update(now, signals, listener);
             keep = Math.min(keep, m.pendingFrom());
         }
         signals.forgetBefore(Math.min(keep, now));
@@ -343,16 +341,6 @@ public final class RequirementMonitors {
         return Truth.of(pool.holds(a.node, signals.value, signals.assign));
     }
 
-    private void tell(RequirementEvent e) {
-        told.add(e);
-        listener.accept(e);
-    }
-
-    /** Every event told so far. */
-    public List<RequirementEvent> events() {
-        return List.copyOf(told);
-    }
-
     /** How many instants of the past the monitors still remember (bounded by the largest window). */
     public int remembered() {
         return signals.remembered();
@@ -371,7 +359,7 @@ public final class RequirementMonitors {
         evaluate();
         List<RequirementResult> out = new ArrayList<>();
         for (RequirementMonitor m : monitors) {
-            out.add(m.finish(end, signals, this::tell)); // its atoms take their values at the end up to end + 1
+            out.add(m.finish(end, signals, listener)); // its atoms take their values at the end up to end + 1
         }
         results = List.copyOf(out);
         return results;
