@@ -54,6 +54,7 @@ public class ExecuteGrootTest {
         // A client of a server already bound: its subscriber connects at once. The first one connected
         // before the process bound, and reconnects on ZeroMQ's timer: a notice sent meanwhile is lost.
         try (GrootClient groot = new GrootClient(port)) {
+            assertTrue("the notice subscriber reaches the publisher", groot.awaitSubscriber(10_000));
             List<byte[]> reply = groot.request('T');
             assertNotNull("served: " + read(err), reply);
             String xml = GrootClient.text(reply.get(1));

@@ -61,6 +61,7 @@ public class GrootServerTest {
         int port = GrootClient.freePortPair();
         server = GrootServer.start(tree, port);
         client = new GrootClient(port);
+        assertTrue("the notice subscriber reaches the publisher", client.awaitSubscriber(10_000));
     }
 
     private static Path resource(String name) throws URISyntaxException {

@@ -27,6 +27,7 @@ public final class GrootClient implements AutoCloseable {
     private final ZContext zmq = new ZContext();
     private final int port;
     private final ZMQ.Socket notices;
+    private final ZMQ.Socket noticeEvents;
     private ZMQ.Socket requests;
     private int timeoutMs = 5000;
 
@@ -35,8 +36,21 @@ public final class GrootClient implements AutoCloseable {
         notices = zmq.createSocket(SocketType.SUB);
         notices.setLinger(0);
         notices.subscribe(new byte[0]);
+        String monitor = "inproc://groot-client-" + IDS.incrementAndGet();
+        notices.monitor(monitor, ZMQ.EVENT_HANDSHAKE_PROTOCOL);
+        noticeEvents = zmq.createSocket(SocketType.PAIR);
+        noticeEvents.connect(monitor);
         notices.connect("tcp://127.0.0.1:" + (port + 1));
         requests = newRequestSocket();
+    }
+
+    /**
+     * Waits until the notice subscriber has finished its handshake with the publisher: a PUB drops
+     * what it sends before a subscriber is there, so a test that expects a notice waits for this first.
+     */
+    public boolean awaitSubscriber(int withinMs) {
+        noticeEvents.setReceiveTimeOut(withinMs);
+        return ZMQ.Event.recv(noticeEvents) != null;
     }
 
     /** A port P with P + 1 free too (both are bound by a publisher), below the ephemeral range. */
