@@ -43,6 +43,7 @@ public final class GrootServer implements AutoCloseable {
     private final AtomicBoolean closed = new AtomicBoolean();
     private volatile long lastRequestNanos = System.nanoTime();
     private volatile Duration heartbeatDelay = DEFAULT_HEARTBEAT_DELAY;
+    private volatile boolean clientAlive = true;
 
     private GrootServer(Tree tree, int port, DeclaredModels declared) {
         this.tree = tree;
@@ -238,8 +239,14 @@ public final class GrootServer implements AutoCloseable {
             if (now != alive) {
                 alive = now;
                 hooks.enableAll(alive);
+                clientAlive = alive;
             }
         }
+    }
+
+    /** False once the heartbeat has disabled the hooks (no request for the delay), true again after the next. */
+    public boolean clientAlive() {
+        return clientAlive;
     }
 
     /** Removes every hook (a paused tree goes on), detaches from the tree and closes the sockets. */

@@ -113,9 +113,14 @@ final class BtcppRunner implements AutoCloseable {
 
     /** The first line matching, waiting up to timeoutMs; fails with the runner's output otherwise. */
     synchronized JsonNode await(String what, Predicate<JsonNode> p, long timeoutMs) throws InterruptedException {
+        return await(what, p, timeoutMs, 0);
+    }
+
+    /** As {@link #await(String, Predicate, long)}, among the lines from index {@code from} on. */
+    synchronized JsonNode await(String what, Predicate<JsonNode> p, long timeoutMs, int from) throws InterruptedException {
         long end = System.currentTimeMillis() + timeoutMs;
         while (true) {
-            for (JsonNode line : lines) {
+            for (JsonNode line : lines.subList(Math.min(from, lines.size()), lines.size())) {
                 if (p.test(line)) {
                     return line;
                 }
@@ -123,7 +128,7 @@ final class BtcppRunner implements AutoCloseable {
             long left = end - System.currentTimeMillis();
             if (left <= 0 || ended) {
                 throw new AssertionError("no " + what + " from miron-btcpp-run within " + timeoutMs + " ms; out: "
-                        + lines + "\nerr: " + errors);
+                        + lines.subList(Math.max(0, lines.size() - 40), lines.size()) + "\nerr: " + errors);
             }
             wait(Math.min(left, 200));
         }

@@ -2,6 +2,7 @@ package org.miron.tests.btcpp;
 
 import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertNull;
 import static org.junit.Assert.assertTrue;
@@ -86,7 +87,7 @@ public class GrootOracleTest {
         int libraryPort = GrootClient.freePortPair();
         runner = new BtcppRunner(List.of(tree.toString(), "--bus", endpoints.busOut(), "--skill-requests",
                 endpoints.request(), "--skill-results", endpoints.skillEvents(), "--period", "20",
-                "--groot", Integer.toString(libraryPort)));
+                "--trace", "--groot", Integer.toString(libraryPort)));
         runner.await("start", l -> l.path("event").asText().equals("start"), 30_000);
         library = new GrootClient(libraryPort);
         int ourPort = GrootClient.freePortPair();
@@ -355,8 +356,20 @@ public class GrootOracleTest {
         assertSame("insert", both('I', hook(3, 0, 0, "SKIPPED", false)));
         assertNotNull(library.awaitNotice(5000));
         assertNotNull(ours.awaitNotice(5000));
-        // Groot2 goes quiet: after the library's 5 s both trees go on, without a notice
-        Thread.sleep(5600);
+        // Groot2 goes quiet: after the library's 5 s both trees go on, without a notice. That is
+        // waited for, not slept (under load a heartbeat thread can be late, and a request before
+        // it came would leave the tree paused): a decision sent while both are paused switches
+        // the task, so the library's trace shows Charge starting once its tree goes on.
+        Thread.sleep(1000); // the lines the library printed before it paused are in by then
+        int traced = runner.lines().size();
+        engine.publishRetained("task", "miron.variant.task",
+                "{\"varpoint\":\"task\",\"value\":\"dock\",\"seq\":2,\"time\":" + System.currentTimeMillis() + "}");
+        runner.await("the library's tree going on to Charge", l -> l.path("node").asText().startsWith("Charge")
+                && l.path("to").asText().equals("RUNNING"), 20_000, traced);
+        for (long end = System.currentTimeMillis() + 20_000; java.groot().clientAlive() && System.currentTimeMillis() < end;) {
+            Thread.sleep(20);
+        }
+        assertFalse("ours: hooks disabled", java.groot().clientAlive());
         library.drainNotices();
         ours.drainNotices();
         assertNull("BT.CPP: hooks disabled", library.awaitNotice(300));
