@@ -124,6 +124,38 @@ public class BtDiagramTest {
         checkLayout(Diagrams.layout(run));
     }
 
+    /**
+     * A bushy tree of 500 nodes whose leaves lie at different depths: the nodes of each depth, read
+     * left to right, in depth-first (document) order, so no two edges cross — what the layout keeps
+     * without ELK's model-order sorting.
+     */
+    @Test
+    public void aWideUnevenTreeIsDrawnInDocumentOrderLayerByLayer() {
+        Diagram diagram = LayoutBenchmark.generated(500);
+        SGraph graph = Diagrams.layout(diagram);
+        checkLayout(graph);
+        List<String> preorder = new ArrayList<>();
+        diagram.frames().get(0).roots().forEach(root -> preorder(root, preorder));
+        Map<String, SNode> byId = byId(graph);
+        Map<Integer, List<SNode>> layers = new java.util.TreeMap<>(); // by depth, each in preorder
+        for (String id : preorder) {
+            assertNotNull(id, byId.get(id));
+            layers.computeIfAbsent(id.split("\\.").length, d -> new ArrayList<>()).add(byId.get(id));
+        }
+        layers.forEach((depth, row) -> {
+            for (int i = 1; i < row.size(); i++) {
+                assertTrue(row.get(i - 1).getId() + " not left of " + row.get(i).getId(),
+                        row.get(i - 1).getPosition().getX() + row.get(i - 1).getSize().getWidth() <= row.get(i).getPosition().getX());
+            }
+        });
+        assertTrue("several layers", layers.size() > 4);
+    }
+
+    private static void preorder(Shape shape, List<String> into) {
+        into.add(shape.id());
+        shape.children().forEach(child -> preorder(child, into));
+    }
+
     private static void checkStructure(Resource file) {
         SGraph graph = Diagrams.layout(Diagrams.of(file, null));
         Map<String, SNode> byId = byId(graph);
