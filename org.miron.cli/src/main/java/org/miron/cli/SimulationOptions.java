@@ -35,7 +35,7 @@ final class SimulationOptions {
     boolean coverage;
 
     @Option(names = "--min-coverage", paramLabel = "PCT",
-            description = "exit 1 when a policy's runs cover less than PCT % of those items (implies --coverage)")
+            description = "exit 1 when a policy's runs cover less than PCT %% of those items (implies --coverage)")
     Double minCoverage;
 
     /** Whether the coverage is reported: asked for, or needed by the gate. */

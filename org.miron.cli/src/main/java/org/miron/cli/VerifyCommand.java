@@ -31,7 +31,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "verify", mixinStandardHelpOptions = true,
         description = "Checks a MIRoN model's requirements over simulated missions: runs the simulator (as miron simulate) "
                 + "with a monitor per requirement on every run and prints, per requirement and policy, the runs that violated "
-                + "it, the violation probability with its exact 95 % interval (Clopper-Pearson) and the first counterexample; "
+                + "it, the violation probability with its exact 95 %% interval (Clopper-Pearson) and the first counterexample; "
                 + "a probabilistic requirement (with probability >= p) is decided by Wald's sequential test. Writes "
                 + "OUT/summary.json and OUT/report.html.",
         exitCodeListHeading = "Exit codes:%n",

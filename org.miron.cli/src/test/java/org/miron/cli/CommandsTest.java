@@ -50,6 +50,30 @@ public class CommandsTest {
         assertFalse("no stack trace: " + r[1], r[1].contains("\tat "));
     }
 
+    /** Every command's help is printed as written: picocli warns on stderr of a lone % in a description. */
+    @Test
+    public void everyCommandsHelpPrintsWithoutAWarning() {
+        java.util.ArrayDeque<CommandLine> open = new java.util.ArrayDeque<>(java.util.List.of(MironCli.commandLine()));
+        int commands = 0;
+        while (!open.isEmpty()) {
+            CommandLine cl = open.poll();
+            open.addAll(cl.getSubcommands().values());
+            PrintStream oldErr = System.err;
+            ByteArrayOutputStream err = new ByteArrayOutputStream();
+            String help;
+            try {
+                System.setErr(new PrintStream(err, true));
+                help = cl.getUsageMessage();
+            } finally {
+                System.setErr(oldErr);
+            }
+            assertEquals(cl.getCommandName() + ": " + err, "", err.toString());
+            assertFalse(cl.getCommandName() + " help: " + help, help.contains("%n"));
+            commands++;
+        }
+        assertTrue("every command visited: " + commands, commands > 10);
+    }
+
     @Test
     public void engineRequiresIo() {
         String[] r = run(new EngineCommand());
