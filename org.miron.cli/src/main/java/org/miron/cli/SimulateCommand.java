@@ -14,6 +14,7 @@ import org.miron.runtime.sim.CoverageTable;
 import org.miron.runtime.sim.Durations;
 import org.miron.runtime.sim.Policy;
 import org.miron.runtime.sim.Setup;
+import org.miron.runtime.sim.Statistics;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
@@ -105,7 +106,7 @@ public class SimulateCommand implements Callable<Integer> {
         console.println();
         console.print(Comparison.table(results));
         console.println();
-        console.println("(mean [95 % confidence interval] over " + runs + " run(s); metric:* are the RoQME estimates' time averages)");
+        console.println("(mean [" + Statistics.INTERVAL + "] over " + runs + " run(s); metric:* are the RoQME estimates' time averages)");
         for (String problem : Comparison.problems(results)) {
             console.println("world: " + problem);
         }

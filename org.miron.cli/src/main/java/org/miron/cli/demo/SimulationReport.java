@@ -13,7 +13,7 @@ import org.miron.runtime.sim.WorldModel;
 
 /**
  * The page {@code miron simulate} writes: per measure a bar chart of the policies' means with their
- * 95 % confidence intervals, then for the first run of each policy the demo report's timeline
+ * 95 % bootstrap intervals (Statistics), then for the first run of each policy the demo report's timeline
  * (metrics, observations, contexts with the running skill, decisions, adaptations).
  */
 public final class SimulationReport {
@@ -47,7 +47,7 @@ public final class SimulationReport {
         out.append(TimelineReport.pageHead("MIRoN simulation: " + title, ".bars{display:flex;flex-wrap:wrap;gap:1em}" + CoverageSection.STYLE))
                 .append("<h1>MIRoN simulation: ").append(TimelineReport.escape(title)).append("</h1>\n");
         int runs = results.isEmpty() ? 0 : results.get(0).runs().size();
-        out.append("<p>").append(runs).append(" run(s) per policy; bars are means, whiskers 95 % confidence intervals.</p>\n");
+        out.append("<p>").append(runs).append(" run(s) per policy; bars are means, whiskers the " + Statistics.INTERVAL + ".</p>\n");
         out.append("<h2>Measures</h2>\n<div class=\"bars\">\n");
         for (String m : Comparison.measureNames(results)) {
             out.append(bars(m));
