@@ -87,8 +87,12 @@ public class MironGenerate extends DefaultTask {
         OutputFolder.empty(outputDir);
         List<File> files = new ArrayList<>(getModels().getFiles());
         files.sort(null);
-        ModelLoader loader = new ModelLoader(rootDir.toPath());
-        BatchGeneration.Outcome outcome = new BatchGeneration(loader, weights, btFormat).generate(files, outputDir.toPath());
+        ModelLoader loader;
+        BatchGeneration.Outcome outcome;
+        synchronized (CoreLock.LOCK) {
+            loader = new ModelLoader(rootDir.toPath());
+            outcome = new BatchGeneration(loader, weights, btFormat).generate(files, outputDir.toPath());
+        }
         List<Diagnostic> problems = new ArrayList<>(outcome.validation());
         problems.addAll(outcome.generationErrors());
         ModelReport.log(getLogger(), problems);

@@ -17,13 +17,12 @@ import org.miron.testkit.RepositoryRoot;
 
 /**
  * A user's project in a temporary folder outside the repository, built by this machine's Gradle
- * through TestKit. Its build takes the plugin from the build's Maven repository (where
- * gradle/publishing.gradle publishes it and the core modules) and everything else from Maven
- * Central, as a user's build takes it from mavenLocal and Maven Central.
+ * through TestKit. Its build takes the plugin and the core modules from mavenLocal, where the
+ * test task has them published first (`publishToMavenLocal`), and everything else from Maven
+ * Central, as a user's build does.
  */
 final class UserProject {
     static final String VERSION = System.getProperty("miron.version");
-    static final String REPO = new File(System.getProperty("miron.repo")).toURI().toString();
 
     final Path dir;
 
@@ -31,10 +30,10 @@ final class UserProject {
         this.dir = dir;
     }
 
-    /** The buildscript block of docs/gradle.md, with the build's repository for mavenLocal. */
+    /** The buildscript block of docs/gradle.md. */
     static String buildscript() {
         return "buildscript {\n"
-                + "    repositories { maven { url '" + REPO + "' }; mavenCentral() }\n"
+                + "    repositories { mavenLocal(); mavenCentral() }\n"
                 + "    dependencies { classpath 'org.miron:org.miron.gradle:" + VERSION + "' }\n"
                 + "}\n";
     }
@@ -71,7 +70,9 @@ final class UserProject {
     }
 
     private GradleRunner runner(String... args) {
-        return GradleRunner.create().withProjectDir(dir.toFile()).withArguments(args).forwardOutput();
+        return GradleRunner.create().withGradleInstallation(TestKitGradle.installation())
+                .withTestKitDir(new File(System.getProperty("miron.testkit.dir"), "home"))
+                .withProjectDir(dir.toFile()).withArguments(args).forwardOutput();
     }
 
     /** Every file below a folder of the project, by path relative to it, with its bytes. */
