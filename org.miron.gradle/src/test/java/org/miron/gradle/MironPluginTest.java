@@ -126,6 +126,25 @@ public class MironPluginTest {
         assertNoStackTrace(check.getOutput());
     }
 
+    @Test
+    public void anImportFromOutsideTheModelFoldersIsToldUntilItsFolderIsAModelFolder() throws Exception {
+        UserProject robot = project(UserProject.buildscript() + "apply plugin: 'org.miron.generate'\n");
+        Files.createDirectories(robot.dir.resolve("common"));
+        Files.move(robot.dir.resolve("src/main/miron/intralogistics.roqme"), robot.dir.resolve("common/intralogistics.roqme"));
+        String model = Files.readString(robot.dir.resolve("src/main/miron/intralogistics.miron"));
+        robot.write("src/main/miron/intralogistics.miron",
+                model.replace("import \"intralogistics.roqme\"", "import \"../../../common/intralogistics.roqme\""));
+        String warning = "common/intralogistics.roqme: warning: imported from outside the model folders";
+        String out = robot.build("assemble").getOutput();
+        assertTrue(out, out.contains(warning));
+
+        robot.append("build.gradle", "miron.models = [fileTree('src/main/miron') { include '**/*.miron' }, 'common']\n");
+        BuildResult result = robot.build("assemble");
+        assertFalse(result.getOutput(), result.getOutput().contains(warning));
+        robot.append("common/intralogistics.roqme", "\n// a comment changes the imported file\n");
+        assertEquals(SUCCESS, outcome(robot.build("assemble"), "generateMiron"));
+    }
+
     private static void assertNoStackTrace(String output) {
         assertFalse(output, output.contains("\tat "));
         assertFalse(output, output.contains("Exception"));
