@@ -33,7 +33,7 @@ public class ModelLoaderBaseFolderTest {
         File tree = brokenTree();
         List<Diagnostic> diagnostics = new ModelLoader(temp.getRoot().toPath().resolve("project")).check(List.of(tree));
         assertTrue(ModelLoader.hasErrors(diagnostics));
-        assertEquals(diagnostics.toString(), "models/broken.bt:3:5: error [bt.decorator-child-count]: "
+        assertEquals(diagnostics.toString(), "models/broken.bt:3:6: error [bt.decorator-child-count]: "
                 + "Inverter needs exactly one child, it has none", diagnostics.get(0).toString());
     }
 
