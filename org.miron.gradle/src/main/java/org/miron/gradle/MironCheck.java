@@ -62,10 +62,7 @@ public class MironCheck extends DefaultTask {
     public void check() {
         List<File> files = new ArrayList<>(getSources().getFiles());
         files.sort(null);
-        List<Diagnostic> diagnostics;
-        synchronized (CoreLock.LOCK) {
-            diagnostics = new ModelLoader(rootDir.toPath()).check(files);
-        }
+        List<Diagnostic> diagnostics = CoreThread.call(() -> new ModelLoader(rootDir.toPath()).check(files));
         ModelReport.log(getLogger(), diagnostics);
         try {
             Files.createDirectories(report.getParentFile().toPath());

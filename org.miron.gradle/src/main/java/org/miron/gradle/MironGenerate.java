@@ -87,12 +87,12 @@ public class MironGenerate extends DefaultTask {
         OutputFolder.empty(outputDir);
         List<File> files = new ArrayList<>(getModels().getFiles());
         files.sort(null);
-        ModelLoader loader;
-        BatchGeneration.Outcome outcome;
-        synchronized (CoreLock.LOCK) {
-            loader = new ModelLoader(rootDir.toPath());
-            outcome = new BatchGeneration(loader, weights, btFormat).generate(files, outputDir.toPath());
-        }
+        // The loader sets the languages up: inside the core's thread too.
+        ModelLoader[] loader = new ModelLoader[1];
+        BatchGeneration.Outcome outcome = CoreThread.call(() -> {
+            loader[0] = new ModelLoader(rootDir.toPath());
+            return new BatchGeneration(loader[0], weights, btFormat).generate(files, outputDir.toPath());
+        });
         List<Diagnostic> problems = new ArrayList<>(outcome.validation());
         problems.addAll(outcome.generationErrors());
         ModelReport.log(getLogger(), problems);
@@ -103,6 +103,6 @@ public class MironGenerate extends DefaultTask {
             throw ModelReport.failure(problems);
         }
         outcome.written().forEach(name -> getLogger().info("wrote {}", new File(outputDir, name)));
-        ImportsOutsideInputs.warn(getLogger(), loader.loadedFiles(), getSources().getFiles());
+        ImportsOutsideInputs.warn(getLogger(), loader[0].loadedFiles(), getSources().getFiles());
     }
 }

@@ -145,6 +145,17 @@ public class MironPluginTest {
         assertEquals(SUCCESS, outcome(robot.build("assemble"), "generateMiron"));
     }
 
+    /** The stack the core gets: `./miron`'s, where a deeply nested tree parses (a Gradle thread's overflows). */
+    @Test
+    public void aDeeplyNestedTreeIsCheckedAsTheCommandLineChecksIt() throws Exception {
+        UserProject robot = project(UserProject.buildscript() + "apply plugin: 'org.miron.generate'\n");
+        robot.write("src/main/miron/deep.bt", "<root main_tree_to_execute=\"Deep\">\n<BehaviorTree ID=\"Deep\">\n"
+                + "<Sequence>".repeat(3000) + "<AlwaysSuccess/>" + "</Sequence>".repeat(3000) + "\n</BehaviorTree>\n</root>\n");
+        BuildResult result = robot.build("checkMiron");
+        assertEquals(SUCCESS, outcome(result, "checkMiron"));
+        assertNoStackTrace(result.getOutput());
+    }
+
     private static void assertNoStackTrace(String output) {
         assertFalse(output, output.contains("\tat "));
         assertFalse(output, output.contains("Exception"));
