@@ -1,6 +1,7 @@
 package org.miron.gradle;
 
 import java.io.File;
+import java.nio.file.Path;
 import java.util.Collection;
 import java.util.Set;
 
@@ -15,11 +16,15 @@ final class ImportsOutsideInputs {
     private ImportsOutsideInputs() {
     }
 
-    static void warn(Logger logger, Collection<File> loaded, Set<File> inputs) {
+    /** Names the file as diagnostics do: relative to the root project's folder when inside it. */
+    static void warn(Logger logger, Collection<File> loaded, Set<File> inputs, File rootDir) {
+        Path root = rootDir.toPath().toAbsolutePath().normalize();
         for (File file : loaded) {
             if (!inputs.contains(file.getAbsoluteFile())) {
+                Path path = file.toPath().toAbsolutePath().normalize();
                 logger.warn("{}: warning: imported from outside the model folders; Gradle will not re-run "
-                        + "generateMiron when it changes: add its folder to miron.models", file);
+                        + "generateMiron when it changes: add its folder to miron.models",
+                        path.startsWith(root) ? root.relativize(path) : path);
             }
         }
     }

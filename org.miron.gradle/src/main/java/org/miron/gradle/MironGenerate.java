@@ -103,6 +103,6 @@ public class MironGenerate extends DefaultTask {
             throw ModelReport.failure(problems);
         }
         outcome.written().forEach(name -> getLogger().info("wrote {}", new File(outputDir, name)));
-        ImportsOutsideInputs.warn(getLogger(), loader[0].loadedFiles(), getSources().getFiles());
+        ImportsOutsideInputs.warn(getLogger(), loader[0].loadedFiles(), getSources().getFiles(), rootDir);
     }
 }

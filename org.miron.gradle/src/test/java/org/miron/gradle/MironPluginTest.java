@@ -137,6 +137,7 @@ public class MironPluginTest {
         String warning = "common/intralogistics.roqme: warning: imported from outside the model folders";
         String out = robot.build("assemble").getOutput();
         assertTrue(out, out.contains(warning));
+        assertFalse("named relative to the project, as diagnostics are", out.contains(robot.dir.resolve("common").toString()));
 
         robot.append("build.gradle", "miron.models = [fileTree('src/main/miron') { include '**/*.miron' }, 'common']\n");
         BuildResult result = robot.build("assemble");
