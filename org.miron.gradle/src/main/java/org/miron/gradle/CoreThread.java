@@ -9,6 +9,8 @@ import java.util.concurrent.Callable;
  * languages are set up in statics of this plugin's class loader (EMF's package registry, the
  * injectors), which the projects of a build that take the plugin from the same class path share:
  * under --parallel, their checkMiron and generateMiron take turns rather than set them up together.
+ * A thread per run also ends the core's thread-locals with the run, instead of leaving them on the
+ * daemon's long-lived threads.
  */
 final class CoreThread {
     private static final long STACK_BYTES = 4L << 20;
