@@ -45,9 +45,7 @@ public class CheckCommand implements Callable<Integer> {
         if (usage != null) {
             return usage;
         }
-        ModelLoader loader = new ModelLoader();
-        files.forEach(loader::load);
-        List<Diagnostic> diagnostics = loader.validateAll();
+        List<Diagnostic> diagnostics = new ModelLoader().check(files);
         PrintWriter out = spec.commandLine().getOut();
         if (format == Format.json) {
             JsonDiagnostics.print(diagnostics, out);
@@ -55,7 +53,6 @@ public class CheckCommand implements Callable<Integer> {
             diagnostics.forEach(out::println);
         }
         out.flush();
-        boolean errors = diagnostics.stream().anyMatch(d -> d.severity() == Diagnostic.Severity.ERROR);
-        return errors ? 1 : 0;
+        return ModelLoader.hasErrors(diagnostics) ? 1 : 0;
     }
 }

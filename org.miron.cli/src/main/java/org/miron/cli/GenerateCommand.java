@@ -3,11 +3,9 @@ package org.miron.cli;
 import java.io.File;
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 
-import org.eclipse.emf.ecore.resource.Resource;
 import org.miron.generator.WeightPolicy;
 import org.miron.generator.standalone.BatchGeneration;
 import org.miron.generator.standalone.ModelLoader;
@@ -76,11 +74,8 @@ public class GenerateCommand implements Callable<Integer> {
                 return Files.USAGE;
             }
         }
-        ModelLoader loader = new ModelLoader();
-        List<Resource> resources = new ArrayList<>();
-        files.forEach(f -> resources.add(loader.load(f)));
         Path dir = output.toPath();
-        BatchGeneration.Outcome outcome = new BatchGeneration(loader, policy, btFormat).run(resources, BatchGeneration.folder(dir));
+        BatchGeneration.Outcome outcome = new BatchGeneration(new ModelLoader(), policy, btFormat).generate(files, dir);
         PrintWriter out = spec.commandLine().getOut();
         outcome.validation().forEach(out::println);
         outcome.generationErrors().forEach(out::println);

@@ -1,5 +1,6 @@
 package org.miron.generator.standalone;
 
+import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -25,7 +26,8 @@ import org.miron.generator.WeightPolicy;
  * Generates several MIRoN (and RoQME) models loaded by a {@link ModelLoader} all or nothing: the models and
  * everything they import are validated, every model is generated in memory, and only when none
  * failed (and no two write the same file) is anything written to the target. The command line,
- * Gradle's generate tasks and the language server run generation through this class.
+ * the Gradle plugin (org.miron.gradle), the repository's `gradle generate` and the language server
+ * run generation through this class.
  */
 public final class BatchGeneration {
 
@@ -71,6 +73,16 @@ public final class BatchGeneration {
         this.loader = loader;
         generator.setWeights(weights);
         generator.setBtFormat(btFormat);
+    }
+
+    /**
+     * What `miron generate -o dir` does: loads the model files (which must exist) with everything
+     * they import, then generates the MIRoN and RoQME models among them into dir, all or nothing.
+     */
+    public Outcome generate(List<File> models, Path dir) {
+        List<Resource> resources = new ArrayList<>();
+        models.forEach(f -> resources.add(loader.load(f)));
+        return run(resources, folder(dir));
     }
 
     /** Generates the MIRoN and RoQME models among resources (loaded by this run's loader) into target. */

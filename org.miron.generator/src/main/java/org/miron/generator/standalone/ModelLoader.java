@@ -34,9 +34,19 @@ public class ModelLoader {
     private static final Set<String> EXTENSIONS = Set.of("bt", "xml", "roqme", "miron");
 
     private final XtextResourceSet resourceSet;
-    private final Path workingDir = Path.of("").toAbsolutePath();
+    private final Path baseDir;
 
+    /** File names in diagnostics are relative to the working directory (a command line's view). */
     public ModelLoader() {
+        this(Path.of(""));
+    }
+
+    /**
+     * File names in diagnostics are relative to baseDir when inside it: a build tool's project
+     * folder, whatever the JVM's working directory (a Gradle daemon's is not the user's).
+     */
+    public ModelLoader(Path baseDir) {
+        this.baseDir = baseDir.toAbsolutePath().normalize();
         // Only BT up front: `check` of tree files never pays for RoQME and MIRoN (see load).
         Injector bt = BtStandaloneSetup.doSetup();
         resourceSet = bt.getInstance(XtextResourceSet.class);
@@ -71,6 +81,20 @@ public class ModelLoader {
         Resource resource = resourceSet.getResource(URI.createFileURI(file.getAbsolutePath()), true);
         EcoreUtil.resolveAll(resource);
         return resource;
+    }
+
+    /**
+     * What `miron check` does: loads the files (which must exist) with everything they import and
+     * validates them all, every check.
+     */
+    public List<Diagnostic> check(List<File> files) {
+        files.forEach(this::load);
+        return validateAll();
+    }
+
+    /** Whether any of the diagnostics is an error (a warning fails nothing). */
+    public static boolean hasErrors(List<Diagnostic> diagnostics) {
+        return diagnostics.stream().anyMatch(d -> d.severity() == Diagnostic.Severity.ERROR);
     }
 
     /** Validates every resource loaded so far (the given files and what they import), every check. */
@@ -131,9 +155,20 @@ public class ModelLoader {
         return value == null ? 0 : value;
     }
 
-    /** A file's path as the user sees it: relative to the working directory when inside it. */
+    /** A file's path as the user sees it: relative to the base folder when inside it. */
     public String displayPath(URI uri) {
         Path path = Path.of(uri.toFileString());
-        return path.startsWith(workingDir) ? workingDir.relativize(path).toString() : path.toString();
+        return path.startsWith(baseDir) ? baseDir.relativize(path).toString() : path.toString();
+    }
+
+    /** The files of every resource loaded so far (the given ones and all they import). */
+    public List<File> loadedFiles() {
+        List<File> files = new ArrayList<>();
+        for (Resource resource : resourceSet.getResources()) {
+            if (resource.getURI().isFile()) {
+                files.add(new File(resource.getURI().toFileString()));
+            }
+        }
+        return files;
     }
 }
