@@ -59,30 +59,60 @@ public final class CdrReader {
         }
         ByteBuffer b = ByteBuffer.wrap(payload, 4, length - 4).slice().order((id & 1) == 1 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN);
         try {
-            return new CdrReader(types, b, xcdr2, delimited).struct(type, "");
+            return new CdrReader(types, b, xcdr2, delimited).struct(type, "", delimited);
         } catch (java.nio.BufferUnderflowException | IndexOutOfBoundsException e) {
             throw new Undecodable("the payload ends before the " + type.fullName() + " does (" + (length - 4) + " bytes)");
         }
     }
 
-    private ObjectNode struct(MsgType t, String path) throws Undecodable {
-        int end = -1;
-        if (delimited) {
-            int size = align(4).getInt();
-            end = buf.position() + size;
-            if (size < 0 || end > buf.limit()) {
-                throw new Undecodable(path + ": a struct of " + size + " bytes past the payload's end");
-            }
+    /**
+     * A struct, after its DHEADER when {@code delimited}. A .msg does not say whether a nested type
+     * is final or appendable, so in a delimited payload a nested struct is read as appendable when
+     * its DHEADER fits and the members decode within it, filling it, else again as final (no
+     * DHEADER). Only the top-level struct may carry members this definition lacks.
+     */
+    private ObjectNode struct(MsgType t, String path, boolean withHeader) throws Undecodable {
+        if (!withHeader) {
+            return members(t, path);
         }
+        int start = buf.position();
+        int size = align(4).getInt();
+        int end = buf.position() + size;
+        if (size < 0 || end > buf.limit()) {
+            if (delimited && !path.isEmpty()) {
+                buf.position(start);
+                return members(t, path);
+            }
+            throw new Undecodable(path + ": a struct of " + Integer.toUnsignedString(size) + " bytes past the payload's end");
+        }
+        int limit = buf.limit();
+        buf.limit(end);
+        try {
+            ObjectNode o = members(t, path);
+            if (!path.isEmpty() && end - buf.position() >= 4) {
+                // what a DHEADER delimits, the members fill (up to padding): else that was no DHEADER
+                throw new Undecodable(path + ": a struct of " + size + " bytes whose members take " + (size - (end - buf.position())));
+            }
+            buf.limit(limit);
+            buf.position(end); // the top-level's members appended by a newer version of the type are skipped
+            return o;
+        } catch (Undecodable | RuntimeException e) {
+            buf.limit(limit);
+            if (path.isEmpty()) {
+                throw e;
+            }
+            buf.position(start);
+            return members(t, path);
+        }
+    }
+
+    private ObjectNode members(MsgType t, String path) throws Undecodable {
         ObjectNode o = F.objectNode();
         if (t.fields().isEmpty()) {
             buf.get();
         }
         for (MsgField f : t.fields()) {
             o.set(f.name(), field(f.type(), path + f.name()));
-        }
-        if (end >= 0) {
-            buf.position(end); // members appended by a newer version of the type are skipped
         }
         return o;
     }
@@ -111,7 +141,7 @@ public final class CdrReader {
 
     private JsonNode element(FieldType ft, String path) throws Undecodable {
         if (ft.primitive() == null) {
-            return struct(types.get(ft.message()), path + ".");
+            return struct(types.get(ft.message()), path + ".", delimited);
         }
         Primitive p = ft.primitive();
         switch (p) {
