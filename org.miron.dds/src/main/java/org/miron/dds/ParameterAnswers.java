@@ -62,7 +62,11 @@ final class ParameterAnswers implements AutoCloseable {
                     while (rep.hasReceiveMore()) {
                         rep.recv();
                     }
-                    handle(request);
+                    try {
+                        handle(request);
+                    } catch (RuntimeException e) { // a bug of ours must not leave the engine unanswered
+                        ignored("cannot apply: " + e);
+                    }
                     rep.send(new byte[0]); // the ack, after the write
                 }
                 if (ready && idle) {
