@@ -4,7 +4,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Executors;
@@ -48,8 +47,9 @@ public final class Bridge implements AutoCloseable {
     private final List<AutoCloseable> entities = new ArrayList<>();
     /** Per DDS topic name, how many remote endpoints each of our readers and writers on it has matched. */
     private final Map<String, List<java.util.function.IntSupplier>> matching = new java.util.concurrent.ConcurrentHashMap<>();
-    private final Map<String, DdsTransport.Writer> decisionWriters = new LinkedHashMap<>();
-    private final Map<String, JsonNode> lastDecision = new LinkedHashMap<>(); // bus thread only
+    /** By mapping (a varpoint may go to several topics); what each wrote last, under the bridge's lock. */
+    private final Map<DecisionMapping, DdsTransport.Writer> decisionWriters = new java.util.IdentityHashMap<>();
+    private final Map<DecisionMapping, JsonNode> lastDecision = new java.util.IdentityHashMap<>();
     private final List<DdsTransport.Writer> estimateWriters = new ArrayList<>();
     private DdsTransport.Writer roqmeEstimates;
     private final long statusIntervalMs;
@@ -96,7 +96,7 @@ public final class Bridge implements AutoCloseable {
         dds.onMatching(m -> LOG.info("dds-bridge: " + m));
         for (DecisionMapping d : config.decisions()) {
             DdsTransport.Writer w = track(RosNames.topic(d.topic()), dds.writer(new TopicSpec(RosNames.topic(d.topic()), d.type(), d.qos(), List.of())));
-            decisionWriters.put(d.varpoint(), w);
+            decisionWriters.put(d, w);
         }
         for (EstimateMapping e : config.estimates()) {
             DdsTransport.Writer w = track(RosNames.topic(e.topic()), dds.writer(new TopicSpec(RosNames.topic(e.topic()), "std_msgs/Float64",
@@ -260,17 +260,17 @@ public final class Bridge implements AutoCloseable {
      */
     private synchronized void writeDecision(DecisionMapping d, JsonNode decided, long timeMs) {
         JsonNode v = decided.isNumber() ? F.numberNode(decided.asDouble()) : decided;
-        if (v.equals(lastDecision.get(d.varpoint()))) {
+        if (v.equals(lastDecision.get(d))) {
             return;
         }
-        lastDecision.put(d.varpoint(), v);
+        lastDecision.put(d, v);
         JsonNode data = DecisionConversion.value(d, decided);
         if (data == null) {
             counters.add("badBusInput");
             LOG.warning("dds-bridge: varpoint " + d.varpoint() + " decided " + decided + ", which " + d.field() + " of " + d.type() + " cannot carry");
             return;
         }
-        write(decisionWriters.get(d.varpoint()), DecisionConversion.message(d, data, timeMs), "decisionsOut");
+        write(decisionWriters.get(d), DecisionConversion.message(d, data, timeMs), "decisionsOut");
         LOG.info("dds-bridge: " + d.varpoint() + " = " + data + " in " + d.field() + " of " + d.type() + " on " + RosNames.topic(d.topic()));
     }
 

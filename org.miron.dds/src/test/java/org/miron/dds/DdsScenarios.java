@@ -204,14 +204,17 @@ public final class DdsScenarios {
     /**
      * The documented example: examples/intralogistics/dds/robot.py (Cyclone, its own network
      * defaults) stands in for the robot beside the example's bridge configuration; its battery
-     * drains until the engine decides dock, which it prints and exits on.
+     * drains until the engine decides dock, which it prints and exits on; maxVelocity reaches it as a
+     * std_msgs/Float64 and as a nav2_msgs/SpeedLimit, the latter through change-parameter answered by
+     * the bridge (no skill interface runs).
      */
     public void exampleRobotClosesTheLoop(Path dir) throws Exception {
         Path example = RepositoryRoot.resolve("examples/intralogistics/dds");
         try (EngineFixture f = new EngineFixture(dir); BusProbe contexts = new BusProbe(f.endpoints.busOut(), Topics.CONTEXT)) {
-            f.startAll();
-            try (LiveProvider p = provider(f.endpoints);
-                    Bridge b = bridge(Files.readString(example.resolve("bridge.json")), f.endpoints)) {
+            f.startInfrastructure(); // no skill interface: the bridge answers the engine's change-parameter (transvel)
+            try (LiveProvider p = provider(f.endpoints); Bridge b = bridge(example.resolve("bridge.json"), f.endpoints)) {
+                f.startEngine(f.options());
+                assertNotNull("the initial decision", f.awaitVariant("task", "pickDeliverCharge"));
                 ProcessBuilder pb = new ProcessBuilder(System.getProperty("dds.python", "python3"), "-u",
                         example.resolve("robot.py").toString(), "--until", "dock", "--timeout", "240", "--period", "0.5", "--step", "0.05")
                         .redirectErrorStream(true);
@@ -230,6 +233,8 @@ public final class DdsScenarios {
                 assertEquals(out, "task: pickDeliverCharge", tasks.get(0));
                 assertEquals(out, "task: dock", tasks.get(tasks.size() - 1));
                 assertTrue(out, out.lines().anyMatch(l -> l.startsWith("maxVelocity: ")));
+                assertTrue(out, out.lines().anyMatch(l -> l.matches("speed_limit: [0-9.]+ m/s")));
+                awaitAcked(f);
                 assertNotNull("its battery reached the bus as BatteryLevel", contexts.await(Topics.CONTEXT,
                         c -> c.path("name").asText().equals("BatteryLevel") && c.path("value").asDouble() < 30, TIMEOUT));
                 assertEquals(0, b.count("malformedInput"));
@@ -268,11 +273,7 @@ public final class DdsScenarios {
                 JsonNode limit = robot.awaitSample("speed", d -> true);
                 assertNotNull("the robot receives a SpeedLimit", limit);
                 assertSpeedLimit(f, limit);
-                long end = System.currentTimeMillis() + TIMEOUT;
-                while (f.engine.status().get("paramAcked") < 1 && System.currentTimeMillis() < end) {
-                    Thread.sleep(20);
-                }
-                assertTrue("the engine's change-parameter is acknowledged by the bridge", f.engine.status().get("paramAcked") >= 1);
+                awaitAcked(f);
                 assertTrue(b.count("parametersIn") >= 1);
                 robot.awaitMatched("power");
                 awaitMatched(b, "rt/power_status");
@@ -298,6 +299,15 @@ public final class DdsScenarios {
                 assertEquals(0, b.count("queriesIgnored"));
             }
         }
+    }
+
+    /** Waits until the engine counts a change-parameter acknowledged (by the bridge: no skill interface runs). */
+    private static void awaitAcked(EngineFixture f) throws InterruptedException {
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (f.engine.status().get("paramAcked") < 1 && System.currentTimeMillis() < end) {
+            Thread.sleep(20);
+        }
+        assertTrue("the engine's change-parameter is acknowledged by the bridge", f.engine.status().get("paramAcked") >= 1);
     }
 
     /** speed_limit = the current maxVelocity decision × 0.01, the set fields, the header stamped. */
