@@ -297,6 +297,19 @@ public final class DdsScenarios {
                 }
                 assertEquals(0, b.count("malformedInput"));
                 assertEquals(0, b.count("queriesIgnored"));
+                // a robot whose PowerStatus is another type of the same name: its samples do not decode, are counted and dropped
+                try (CyclonePeer other = new CyclonePeer(dir)) {
+                    other.endpoint("writer", "power", "rt/power_status", "truncated my_robot_msgs/PowerStatus", "");
+                    other.awaitMatched("power");
+                    long contexts = b.count("contextsIn");
+                    other.write("power", "{\"header\":{\"frame_id\":\"x\"}}");
+                    long end = System.currentTimeMillis() + TIMEOUT;
+                    while (b.count("malformedInput") < 1 && System.currentTimeMillis() < end) {
+                        Thread.sleep(20);
+                    }
+                    assertEquals("the undecodable PowerStatus is counted", 1, b.count("malformedInput"));
+                    assertEquals("and dropped", contexts, b.count("contextsIn"));
+                }
             }
         }
     }

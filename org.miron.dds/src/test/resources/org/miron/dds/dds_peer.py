@@ -251,6 +251,16 @@ TYPES = {
 }
 TYPES.update(ROBOT_TYPES)
 
+
+@dataclass
+@annotate.final
+class TruncatedPowerStatus(IdlStruct, typename="my_robot_msgs::msg::dds_::PowerStatus_"):
+    """A robot whose PowerStatus is not the bridge's: same name, only the header (its samples end early)."""
+    header: Header = field(default_factory=Header)
+
+
+TYPES["truncated my_robot_msgs/PowerStatus"] = TruncatedPowerStatus
+
 out_lock = threading.Lock()
 
 

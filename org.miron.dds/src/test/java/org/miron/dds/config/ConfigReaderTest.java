@@ -195,10 +195,12 @@ public class ConfigReaderTest {
     public void theExampleFollowsTheSchemaAndIsAccepted() throws Exception {
         Path example = RepositoryRoot.resolve("examples/intralogistics/dds/bridge.json");
         JsonSchemaFile.DDS_BRIDGE.assertValid(example);
-        BridgeConfig c = read(Files.readString(example));
+        BridgeConfig c = ConfigReader.read(Files.readString(example), example, IhmcTransport.CATALOG, w -> fail(w));
         assertEquals(2, c.contexts().size());
         assertEquals(ContextType.ENUM, c.contexts().get(1).as());
         assertEquals("std_msgs/Float64", c.decisions().get(1).type());
+        assertEquals("maxVelocity also as Nav2's speed limit", "nav2_msgs/SpeedLimit", c.decisions().get(2).type());
+        assertEquals("transvel", c.decisions().get(2).parameter());
         assertFalse(JsonSchemaFile.DDS_BRIDGE.problems("{\"decisions\": [{\"varpoint\": \"v\", \"topic\": \"rt/x\"}]}").isEmpty());
         assertFalse(JsonSchemaFile.DDS_BRIDGE.problems("{\"domain\": 0}").isEmpty());
     }
