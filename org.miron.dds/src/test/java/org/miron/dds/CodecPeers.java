@@ -18,7 +18,8 @@ public final class CodecPeers {
     /** Starts the peer, or returns null when there is no python with cyclonedds ({@link #skip} says so). */
     public static synchronized AutoCloseable start(Path dir) throws Exception {
         String python = System.getProperty("dds.python", "python3");
-        if (!new File(python).canExecute()) {
+        if (!new File(python).canExecute() || new ProcessBuilder(python, "-c", "import cyclonedds").redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start().waitFor() != 0) {
             skip = "no python with cyclonedds at " + python + " (scripts/ensure-cyclonedds.sh)";
             System.err.println("skipped: " + skip);
             return null;
