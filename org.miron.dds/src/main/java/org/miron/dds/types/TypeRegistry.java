@@ -7,7 +7,6 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -133,10 +132,5 @@ public final class TypeRegistry {
     /** The zero value of one element. */
     JsonNode zero(FieldType element) {
         return element.primitive() != null ? Values.zero(element.primitive()) : template(all.get(element.message()));
-    }
-
-    /** Every field's default, for lists in error messages. */
-    public List<String> names() {
-        return new ArrayList<>(all.keySet());
     }
 }
