@@ -5,9 +5,11 @@ cyclonedds 11.0.1), an implementation independent of the bridge's: it speaks ROS
 
 It publishes sensor_msgs/BatteryState on battery_state, draining from --start by --step every
 --period seconds, and prints every decision the bridge publishes on miron/task (std_msgs/String,
-transient-local: it gets the current one at once) and miron/max_velocity (std_msgs/Float64):
+transient-local: it gets the current one at once), miron/max_velocity (std_msgs/Float64) and
+speed_limit (nav2_msgs/SpeedLimit, declared here from its field list, as Nav2's controller reads it):
 
     task: pickDeliverCharge
+    speed_limit: 0.72 m/s
     battery: 0.30
     ...
     task: dock
@@ -89,6 +91,14 @@ class Float64(IdlStruct, typename="std_msgs::msg::dds_::Float64_"):
     data: t.float64 = 0.0
 
 
+@dataclass
+@annotate.final
+class SpeedLimit(IdlStruct, typename="nav2_msgs::msg::dds_::SpeedLimit_"):
+    header: Header = field(default_factory=Header)
+    percentage: bool = False
+    speed_limit: t.float64 = 0.0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--domain", type=int, default=0, help="the DDS domain (ROS_DOMAIN_ID), 0")
@@ -106,6 +116,7 @@ def main():
                   Policy.History.KeepLast(1))
     task = DataReader(dp, Topic(dp, "rt/miron/task", String), qos=latched)
     velocity = DataReader(dp, Topic(dp, "rt/miron/max_velocity", Float64), qos=latched)
+    speed_limit = DataReader(dp, Topic(dp, "rt/speed_limit", SpeedLimit), qos=latched)
 
     level, next_sample = a.start, time.monotonic()
     end = time.monotonic() + a.timeout if a.until and a.timeout > 0 else None
@@ -117,6 +128,9 @@ def main():
         for s in velocity.take(N=16):
             if isinstance(s, Float64):
                 print("maxVelocity: %g" % s.data, flush=True)
+        for s in speed_limit.take(N=16):
+            if isinstance(s, SpeedLimit):
+                print("speed_limit: %g %s" % (s.speed_limit, "%" if s.percentage else "m/s"), flush=True)
         for s in task.take(N=16):
             if isinstance(s, String):  # not an InvalidSample (the bridge went away)
                 print("task: " + s.data, flush=True)

@@ -11,6 +11,7 @@ import org.miron.dds.config.ConfigException;
 import org.miron.dds.config.ConfigReader;
 import org.miron.dds.transport.DdsException;
 import org.miron.dds.transport.IhmcTransport;
+import org.miron.dds.types.DefinitionException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -36,6 +37,11 @@ public final class DdsBridgeCommand implements Callable<Integer> {
             description = "publish miron.dds.status at least this often (default: ${DEFAULT-VALUE})")
     long statusInterval = 5000;
 
+    @Option(names = "--skill-interface", paramLabel = "ENDPOINT",
+            description = "where the bridge answers the engine's change-parameter queries in the skill interface's place, when a "
+                    + "decision mapping names a parameter (default: ${DEFAULT-VALUE})")
+    String skillInterface = org.miron.runtime.Endpoints.DEFAULT_SKILL;
+
     @Mixin
     BrokerEndpoints.BusIn busIn = new BrokerEndpoints.BusIn();
 
@@ -51,25 +57,30 @@ public final class DdsBridgeCommand implements Callable<Integer> {
         }
         BridgeConfig c;
         try {
-            c = ConfigReader.read(Files.readString(config), IhmcTransport.CATALOG);
+            c = ConfigReader.read(Files.readString(config), config, IhmcTransport.CATALOG, err::println);
         } catch (IOException e) {
             err.println("miron dds-bridge: error: cannot read " + config + ": " + e.getMessage());
             return 2;
         } catch (ConfigException e) {
             err.println(e.format(config.toString()));
             return 2;
+        } catch (DefinitionException e) {
+            err.println(e.format());
+            return 2;
         }
         Bridge bridge;
         try {
-            bridge = new Bridge(c, new IhmcTransport(c.domain(), c.name(), c.interfaces()), busIn.endpoint, busOut.endpoint,
-                    statusInterval).start();
+            bridge = new Bridge(c, new IhmcTransport(c.domain(), c.name(), c.interfaces(), c.types()), busIn.endpoint, busOut.endpoint,
+                    skillInterface, statusInterval).start();
         } catch (DdsException e) {
             err.println("miron dds-bridge: error: " + e.getMessage());
             return 2;
         }
         System.out.println("miron dds-bridge: domain " + c.domain() + " on " + c.interfaces().stream().map(a -> a.getHostAddress()).toList()
                 + ", " + c.contexts().size() + " context topics, " + c.decisions().size() + " decision topics, "
-                + c.estimates().size() + " estimate topics" + (c.roqme() == null ? "" : ", RoQME topics in \"" + c.roqme().partition() + "\"")
+                + c.estimates().size() + " estimate topics"
+                + (c.types().loaded().isEmpty() ? "" : ", " + c.types().loaded().size() + " message types loaded")
+                + (c.answersParameters() ? ", change-parameter answered on " + skillInterface : "") + (c.roqme() == null ? "" : ", RoQME topics in \"" + c.roqme().partition() + "\"")
                 + ", bus " + busIn.endpoint + " / " + busOut.endpoint);
         return UntilShutdown.run("dds-bridge", bridge);
     }

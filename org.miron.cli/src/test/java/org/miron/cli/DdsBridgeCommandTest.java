@@ -33,6 +33,21 @@ public class DdsBridgeCommandTest {
     }
 
     @Test
+    public void aBadMessageDefinitionIsADdsTypesErrorAtItsToken() throws IOException {
+        Path root = temp.getRoot().toPath();
+        Path msg = Cli.write(root, "msgs/my_robot_msgs/msg/PowerStatus.msg", "# the battery driver's message\nstd_msgs/Header header\n  flaot32 charge_percent\n");
+        Path config = Cli.write(root, "bridge.json", """
+                {"messages": ["msgs/my_robot_msgs"],
+                 "contexts": [{"topic": "power_status", "type": "my_robot_msgs/PowerStatus", "field": "charge_percent", "context": "BatteryLevel"}]}
+                """);
+        assertEquals(2, cli.run("dds-bridge", "--config", config.toString()));
+        String err = cli.err.toString().trim();
+        assertTrue(err, err.startsWith(msg.toAbsolutePath().normalize() + ":3:3: error [dds-types]: unknown type flaot32"));
+        assertTrue(err, err.endsWith("did you mean float32?"));
+        assertEquals(1, err.lines().count());
+    }
+
+    @Test
     public void aMissingFileOrBadOptionIsAUsageError() {
         assertEquals(2, cli.run("dds-bridge", "--config", temp.getRoot().toPath().resolve("none.json").toString()));
         assertTrue(cli.err.toString(), cli.err.toString().startsWith("miron dds-bridge: error: cannot read "));

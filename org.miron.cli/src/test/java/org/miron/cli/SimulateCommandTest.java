@@ -69,6 +69,26 @@ public class SimulateCommandTest {
                 .equals(Files.readString(a.resolve("summary.json"))));
     }
 
+    /** The Nav2-shaped example (examples/nav2) passes miron check and simulates: the adaptive robot adapts and reaches goals. */
+    @Test
+    public void theNav2ExampleChecksAndSimulates() throws Exception {
+        Path dir = Cli.ROOT.resolve("examples/nav2");
+        Cli check = new Cli();
+        assertEquals(check.err.toString() + check.out(), 0, check.run("check", dir.resolve("nav2.miron").toString(),
+                dir.resolve("nav2.bt").toString(), dir.resolve("nav2.roqme").toString()));
+        Path out = tmp.getRoot().toPath().resolve("nav2");
+        Cli sim = new Cli();
+        assertEquals(sim.err.toString(), 0, sim.run("simulate", dir.resolve("nav2.miron").toString(), "--world",
+                dir.resolve("world.json").toString(), "--duration", "1h", "--runs", "2", "--out", out.toString()));
+        JsonNode policies = Json.MAPPER.readTree(out.resolve("summary.json").toFile()).path("policies");
+        assertTrue(policies.toString(), policies.path("adaptive").path("engine:adaptations").path("mean").asDouble() > 0);
+        for (String policy : List.of("adaptive", "preset")) {
+            assertTrue(policy, policies.path(policy).path("goals").path("mean").asDouble() > 0);
+        }
+        assertTrue("slowing near people: fewer near misses", policies.path("adaptive").path("near_misses").path("mean").asDouble()
+                < policies.path("preset").path("near_misses").path("mean").asDouble());
+    }
+
     @Test
     public void aBadWorldIsRefusedWithItsPositions() throws Exception {
         String bad = Files.readString(WORLD).replace("\"FreeSpace\": { \"value\": \"freeSpace\" }",

@@ -4,7 +4,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Executors;
@@ -48,8 +47,9 @@ public final class Bridge implements AutoCloseable {
     private final List<AutoCloseable> entities = new ArrayList<>();
     /** Per DDS topic name, how many remote endpoints each of our readers and writers on it has matched. */
     private final Map<String, List<java.util.function.IntSupplier>> matching = new java.util.concurrent.ConcurrentHashMap<>();
-    private final Map<String, DdsTransport.Writer> decisionWriters = new LinkedHashMap<>();
-    private final Map<String, JsonNode> lastDecision = new LinkedHashMap<>(); // bus thread only
+    /** By mapping (a varpoint may go to several topics); what each wrote last, under the bridge's lock. */
+    private final Map<DecisionMapping, DdsTransport.Writer> decisionWriters = new java.util.IdentityHashMap<>();
+    private final Map<DecisionMapping, JsonNode> lastDecision = new java.util.IdentityHashMap<>();
     private final List<DdsTransport.Writer> estimateWriters = new ArrayList<>();
     private DdsTransport.Writer roqmeEstimates;
     private final long statusIntervalMs;
@@ -59,9 +59,21 @@ public final class Bridge implements AutoCloseable {
         return t;
     });
 
+    private final String skillEndpoint;
+    private ParameterAnswers answers;
+
     /** The bridge owns {@code dds} and closes it. */
     public Bridge(BridgeConfig config, DdsTransport dds, String busIn, String busOut, long statusIntervalMs) {
+        this(config, dds, busIn, busOut, org.miron.runtime.Endpoints.DEFAULT_SKILL, statusIntervalMs);
+    }
+
+    /**
+     * @param skillEndpoint where the skill interface's REP would be: the bridge answers the engine's
+     *                      change-parameter queries there when a decision mapping names a {@code parameter}
+     */
+    public Bridge(BridgeConfig config, DdsTransport dds, String busIn, String busOut, String skillEndpoint, long statusIntervalMs) {
         this.config = config;
+        this.skillEndpoint = skillEndpoint;
         this.dds = dds;
         this.statusIntervalMs = statusIntervalMs;
         List<String> subscriptions = new ArrayList<>();
@@ -84,7 +96,7 @@ public final class Bridge implements AutoCloseable {
         dds.onMatching(m -> LOG.info("dds-bridge: " + m));
         for (DecisionMapping d : config.decisions()) {
             DdsTransport.Writer w = track(RosNames.topic(d.topic()), dds.writer(new TopicSpec(RosNames.topic(d.topic()), d.type(), d.qos(), List.of())));
-            decisionWriters.put(d.varpoint(), w);
+            decisionWriters.put(d, w);
         }
         for (EstimateMapping e : config.estimates()) {
             DdsTransport.Writer w = track(RosNames.topic(e.topic()), dds.writer(new TopicSpec(RosNames.topic(e.topic()), "std_msgs/Float64",
@@ -97,6 +109,13 @@ public final class Bridge implements AutoCloseable {
             roqmeEstimates = track(est.name(), dds.writer(est));
         }
         bus.start();
+        if (config.answersParameters()) {
+            try {
+                answers = new ParameterAnswers(skillEndpoint, this::parameter, counters);
+            } catch (IllegalStateException e) {
+                throw new DdsException(e.getMessage(), e);
+            }
+        }
         timer.scheduleAtFixedRate(this::publishStatus, 0, statusIntervalMs, TimeUnit.MILLISECONDS);
         for (ContextMapping c : config.contexts()) {
             TopicSpec spec = new TopicSpec(RosNames.topic(c.topic()), c.type(), c.qos(), List.of());
@@ -205,34 +224,54 @@ public final class Bridge implements AutoCloseable {
             return;
         }
         if (topic.equals(Topics.DECISION)) {
-            decision(b.path("decisions"));
+            decision(b);
         } else if (topic.equals(Topics.ESTIMATE)) {
             estimate(b);
         }
     }
 
     /** Writes each mapped varpoint whose value changed since the last write. */
-    private void decision(JsonNode decisions) {
+    private void decision(JsonNode body) {
+        JsonNode decisions = body.path("decisions");
+        long time = body.path("time").canConvertToLong() ? body.path("time").asLong() : System.currentTimeMillis();
         for (DecisionMapping d : config.decisions()) {
             JsonNode v = decisions.get(d.varpoint());
-            if (v == null || v.isNull() || v.equals(lastDecision.get(d.varpoint()))) {
-                continue;
+            if (v != null && !v.isNull()) {
+                writeDecision(d, v, time);
             }
-            JsonNode data = switch (d.type()) {
-                case "std_msgs/Float64" -> v.isNumber() ? v : null;
-                case "std_msgs/Bool" -> v.isBoolean() ? v : null;
-                default -> F.textNode(v.asText());
-            };
-            if (data == null) {
-                counters.add("badBusInput");
-                LOG.warning("dds-bridge: varpoint " + d.varpoint() + " decided " + v + ", which a " + d.type() + " cannot carry");
-                lastDecision.put(d.varpoint(), v);
-                continue;
-            }
-            write(decisionWriters.get(d.varpoint()), data, "decisionsOut");
-            lastDecision.put(d.varpoint(), v);
-            LOG.info("dds-bridge: " + d.varpoint() + " = " + data + " on " + RosNames.topic(d.topic()));
         }
+    }
+
+    /** A change-parameter query for {@code parameter}: written to its mapping's topic (if not already), false when none maps it. */
+    private boolean parameter(String parameter, JsonNode value) {
+        for (DecisionMapping d : config.decisions()) {
+            if (parameter.equals(d.parameter())) {
+                writeDecision(d, value, System.currentTimeMillis());
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Writes the decided value into the mapping's field (times its scale) of the mapping's base
+     * message, the header stamped with the decision's time, unless that value was written last.
+     * Called from the bus thread (miron.decision) and the change-parameter thread: one at a time.
+     */
+    private synchronized void writeDecision(DecisionMapping d, JsonNode decided, long timeMs) {
+        JsonNode v = decided.isNumber() ? F.numberNode(decided.asDouble()) : decided;
+        if (v.equals(lastDecision.get(d))) {
+            return;
+        }
+        lastDecision.put(d, v);
+        JsonNode data = DecisionConversion.value(d, decided);
+        if (data == null) {
+            counters.add("badBusInput");
+            LOG.warning("dds-bridge: varpoint " + d.varpoint() + " decided " + decided + ", which " + d.field() + " of " + d.type() + " cannot carry");
+            return;
+        }
+        write(decisionWriters.get(d), DecisionConversion.message(d, data, timeMs), "decisionsOut");
+        LOG.info("dds-bridge: " + d.varpoint() + " = " + data + " in " + d.field() + " of " + d.type() + " on " + RosNames.topic(d.topic()));
     }
 
     private void estimate(JsonNode b) {
@@ -260,8 +299,12 @@ public final class Bridge implements AutoCloseable {
     }
 
     private void write(DdsTransport.Writer w, JsonNode data, String counter) {
+        write(w, F.objectNode().set("data", data), counter);
+    }
+
+    private void write(DdsTransport.Writer w, ObjectNode message, String counter) {
         try {
-            w.write(F.objectNode().set("data", data));
+            w.write(message);
             counters.add(counter);
         } catch (RuntimeException e) {
             counters.error("ddsWrite", e.getMessage());
@@ -283,7 +326,7 @@ public final class Bridge implements AutoCloseable {
         return bus.awaitReady(timeoutMs);
     }
 
-    /** A counter of {@code miron.dds.status}: contextsIn, estimatesIn, decisionsOut, estimatesOut, malformedInput, badBusInput. */
+    /** A counter of {@code miron.dds.status}: contextsIn, estimatesIn, decisionsOut, estimatesOut, parametersIn, queriesIgnored, malformedInput, badBusInput. */
     public long count(String name) {
         return counters.get(name);
     }
@@ -291,6 +334,9 @@ public final class Bridge implements AutoCloseable {
     @Override
     public void close() {
         timer.shutdownNow();
+        if (answers != null) {
+            answers.close();
+        }
         bus.close();
         for (AutoCloseable e : entities) {
             try {

@@ -9,7 +9,8 @@ import java.util.concurrent.atomic.AtomicLong;
 
 /** What the bridge counts, as {@code miron.dds.status} shows it; thread-safe. */
 final class BridgeCounters {
-    static final String[] NAMES = {"contextsIn", "estimatesIn", "decisionsOut", "estimatesOut", "malformedInput", "badBusInput"};
+    static final String[] NAMES = {"contextsIn", "estimatesIn", "decisionsOut", "estimatesOut", "parametersIn", "queriesIgnored",
+        "malformedInput", "badBusInput"};
     private final Map<String, AtomicLong> counts = new ConcurrentHashMap<>();
     private volatile ObjectNode lastError;
 

@@ -34,11 +34,22 @@ final class CyclonePeer implements AutoCloseable {
     private int seen; // events before this index were consumed by awaitEvent
 
     CyclonePeer(Path dir) throws IOException, InterruptedException {
+        this(dir, List.of());
+    }
+
+    /** The peer as an encoder and decoder only ({@code --codec}): Cyclone's CDR without joining a domain, so it runs anywhere. */
+    static CyclonePeer codec(Path dir) throws IOException, InterruptedException {
+        return new CyclonePeer(dir, List.of("--codec"));
+    }
+
+    private CyclonePeer(Path dir, List<String> args) throws IOException, InterruptedException {
         Path script = dir.resolve("dds_peer.py");
         try (InputStream s = CyclonePeer.class.getResourceAsStream("dds_peer.py")) {
             Files.copy(s, script, StandardCopyOption.REPLACE_EXISTING);
         }
-        ProcessBuilder pb = new ProcessBuilder(System.getProperty("dds.python", "python3"), "-u", script.toString());
+        List<String> cmd = new ArrayList<>(List.of(System.getProperty("dds.python", "python3"), "-u", script.toString()));
+        cmd.addAll(args);
+        ProcessBuilder pb = new ProcessBuilder(cmd);
         pb.environment().put("CYCLONEDDS_URI", CYCLONE_CONFIG);
         pb.redirectError(ProcessBuilder.Redirect.INHERIT);
         process = pb.start();
@@ -138,6 +149,28 @@ final class CyclonePeer implements AutoCloseable {
     void write(String id, String data) throws IOException, InterruptedException {
         send("{\"op\":\"write\",\"id\":\"" + id + "\",\"data\":" + data + "}");
         assertNotNull("write " + id, awaitEvent(e -> e.path("event").asText().equals("ok") && e.path("op").asText().equals("write")));
+    }
+
+    /** Cyclone's CDR of the message ({@code xcdr2}: version 2; {@code appendable}: the types declared appendable), hex. */
+    String encode(String type, String data, boolean xcdr2, boolean appendable) throws IOException, InterruptedException {
+        send("{\"op\":\"encode\",\"type\":\"" + type + "\",\"data\":" + data + ",\"xcdr2\":" + xcdr2 + ",\"appendable\":" + appendable + "}");
+        JsonNode e = awaitEvent(x -> x.path("event").asText().equals("encoded") || x.path("event").asText().equals("error"));
+        assertNotNull("the peer encodes a " + type, e);
+        if (!e.has("hex")) {
+            throw new AssertionError("the peer cannot encode " + data + ": " + e);
+        }
+        return e.path("hex").asText();
+    }
+
+    /** The message Cyclone reads from the payload (hex), or an AssertionError with Cyclone's reason. */
+    JsonNode decode(String type, String hex) throws IOException, InterruptedException {
+        send("{\"op\":\"decode\",\"type\":\"" + type + "\",\"hex\":\"" + hex + "\"}");
+        JsonNode e = awaitEvent(x -> x.path("event").asText().equals("decoded") || x.path("event").asText().equals("error"));
+        assertNotNull("the peer decodes a " + type, e);
+        if (!e.has("data")) {
+            throw new AssertionError("Cyclone cannot decode our " + type + " (" + hex + "): " + e);
+        }
+        return e.path("data");
     }
 
     /** Stops the peer at once, as a crashing robot would go. */

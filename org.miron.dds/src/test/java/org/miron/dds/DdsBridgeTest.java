@@ -75,6 +75,11 @@ public class DdsBridgeTest {
     }
 
     @Test
+    public void robotWithItsOwnTypesClosesTheLoop() throws Exception {
+        scenario("robotWithItsOwnTypesClosesTheLoop");
+    }
+
+    @Test
     public void keySwitchRefusesWhatItDoesNotRecognise() throws Exception {
         scenario("keySwitchRefusesWhatItDoesNotRecognise");
     }

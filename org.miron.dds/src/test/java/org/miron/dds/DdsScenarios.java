@@ -51,6 +51,15 @@ public final class DdsScenarios {
         return b;
     }
 
+    /** A bridge whose configuration is the file {@code config} (its message packages relative to it), answering change-parameter on ep.skill(). */
+    static Bridge bridge(Path config, Endpoints ep) throws Exception {
+        BridgeConfig c = ConfigReader.read(Files.readString(config), config, IhmcTransport.CATALOG, System.err::println);
+        Bridge b = new Bridge(c, new IhmcTransport(c.domain(), c.name(), c.interfaces(), c.types()), ep.busIn(), ep.busOut(),
+                ep.skill(), 500).start();
+        assertTrue("the bridge reaches the broker", b.awaitReady(TIMEOUT));
+        return b;
+    }
+
     /** Waits until the bridge's own endpoints on the topic have matched the peer (matching is seen on each side at its own time). */
     static void awaitMatched(Bridge b, String ddsTopic) throws InterruptedException {
         long end = System.currentTimeMillis() + TIMEOUT;
@@ -195,14 +204,17 @@ public final class DdsScenarios {
     /**
      * The documented example: examples/intralogistics/dds/robot.py (Cyclone, its own network
      * defaults) stands in for the robot beside the example's bridge configuration; its battery
-     * drains until the engine decides dock, which it prints and exits on.
+     * drains until the engine decides dock, which it prints and exits on; maxVelocity reaches it as a
+     * std_msgs/Float64 and as a nav2_msgs/SpeedLimit, the latter through change-parameter answered by
+     * the bridge (no skill interface runs).
      */
     public void exampleRobotClosesTheLoop(Path dir) throws Exception {
         Path example = RepositoryRoot.resolve("examples/intralogistics/dds");
         try (EngineFixture f = new EngineFixture(dir); BusProbe contexts = new BusProbe(f.endpoints.busOut(), Topics.CONTEXT)) {
-            f.startAll();
-            try (LiveProvider p = provider(f.endpoints);
-                    Bridge b = bridge(Files.readString(example.resolve("bridge.json")), f.endpoints)) {
+            f.startInfrastructure(); // no skill interface: the bridge answers the engine's change-parameter (transvel)
+            try (LiveProvider p = provider(f.endpoints); Bridge b = bridge(example.resolve("bridge.json"), f.endpoints)) {
+                f.startEngine(f.options());
+                assertNotNull("the initial decision", f.awaitVariant("task", "pickDeliverCharge"));
                 ProcessBuilder pb = new ProcessBuilder(System.getProperty("dds.python", "python3"), "-u",
                         example.resolve("robot.py").toString(), "--until", "dock", "--timeout", "240", "--period", "0.5", "--step", "0.05")
                         .redirectErrorStream(true);
@@ -221,11 +233,104 @@ public final class DdsScenarios {
                 assertEquals(out, "task: pickDeliverCharge", tasks.get(0));
                 assertEquals(out, "task: dock", tasks.get(tasks.size() - 1));
                 assertTrue(out, out.lines().anyMatch(l -> l.startsWith("maxVelocity: ")));
+                assertTrue(out, out.lines().anyMatch(l -> l.matches("speed_limit: [0-9.]+ m/s")));
+                awaitAcked(f);
                 assertNotNull("its battery reached the bus as BatteryLevel", contexts.await(Topics.CONTEXT,
                         c -> c.path("name").asText().equals("BatteryLevel") && c.path("value").asDouble() < 30, TIMEOUT));
                 assertEquals(0, b.count("malformedInput"));
             }
         }
+    }
+
+    /**
+     * A robot with only its own message types (my_robot_msgs/PowerStatus in, nav2_msgs/SpeedLimit
+     * out, both declared by the peer from their field lists): its draining battery brings the
+     * engine to dock; maxVelocity, an arch-bound parameter, reaches it as a SpeedLimit of decision ×
+     * 0.01 through the engine's change-parameter query, which the bridge answers in the skill
+     * interface's place (no skill interface runs); a robot that joins late gets both at once.
+     */
+    public void robotWithItsOwnTypesClosesTheLoop(Path dir) throws Exception {
+        Path msgs = Path.of(DdsScenarios.class.getResource("msgs/my_robot_msgs/package.xml").toURI()).getParent();
+        Path config = dir.resolve("bridge.json");
+        Files.writeString(config, """
+                {"messages": ["%s", "%s"],
+                 "contexts": [{"topic": "power_status", "type": "my_robot_msgs/PowerStatus", "field": "charge_percent",
+                               "context": "BatteryLevel", "namespace": "Intralogistics"}],
+                 "decisions": [{"varpoint": "task", "topic": "miron/task"},
+                               {"varpoint": "maxVelocity", "topic": "speed_limit", "type": "nav2_msgs/SpeedLimit", "field": "speed_limit",
+                                "scale": 0.01, "set": {"percentage": false, "header.frame_id": "map"}, "parameter": "transvel"}]}
+                """.formatted(dir.relativize(msgs), dir.relativize(RepositoryRoot.resolve("examples/nav2/msgs/nav2_msgs"))));
+        String latched = ",\"durability\":\"transient_local\",\"depth\":1";
+        try (EngineFixture f = new EngineFixture(dir); BusProbe roqme = new BusProbe(f.endpoints.busOut(), "roqme.")) {
+            f.startInfrastructure(); // no skill interface: the bridge answers change-parameter
+            try (LiveProvider p = provider(f.endpoints); Bridge b = bridge(config, f.endpoints); CyclonePeer robot = new CyclonePeer(dir)) {
+                f.startEngine(f.options());
+                assertNotNull("the initial decision", f.awaitVariant("task", "pickDeliverCharge"));
+                robot.endpoint("reader", "task", "rt/miron/task", "std_msgs/String", latched);
+                robot.endpoint("reader", "speed", "rt/speed_limit", "nav2_msgs/SpeedLimit", latched);
+                robot.endpoint("writer", "power", "rt/power_status", "my_robot_msgs/PowerStatus", "");
+                robot.awaitMatched("speed");
+                JsonNode limit = robot.awaitSample("speed", d -> true);
+                assertNotNull("the robot receives a SpeedLimit", limit);
+                assertSpeedLimit(f, limit);
+                awaitAcked(f);
+                assertTrue(b.count("parametersIn") >= 1);
+                robot.awaitMatched("power");
+                awaitMatched(b, "rt/power_status");
+                for (double level : new double[] {80, 50, 20}) { // the battery drains
+                    robot.write("power", "{\"header\":{\"frame_id\":\"base\"},\"charge_percent\":" + level
+                            + ",\"status\":1,\"charger\":{\"dock_id\":\"d1\"},\"cell_voltages\":[3.5,3.6]}");
+                    assertNotNull("BatteryLevel " + level + " from the robot's PowerStatus", roqme.await(Topics.CONTEXT,
+                            c -> c.path("name").asText().equals("BatteryLevel") && c.path("value").asDouble() == level, TIMEOUT));
+                }
+                assertNotNull("the engine decides dock", f.awaitVariant("task", "dock"));
+                assertNotNull("the robot receives dock", robot.awaitSample("task", d -> d.path("data").asText().equals("dock")));
+                try (CyclonePeer late = new CyclonePeer(dir)) {
+                    late.endpoint("reader", "task", "rt/miron/task", "std_msgs/String", latched);
+                    late.endpoint("reader", "speed", "rt/speed_limit", "nav2_msgs/SpeedLimit", latched);
+                    JsonNode task = late.awaitSample("task", d -> true);
+                    assertNotNull("the late robot gets the current task", task);
+                    assertEquals("dock", task.path("data").asText());
+                    JsonNode lateLimit = late.awaitSample("speed", d -> true);
+                    assertNotNull("the late robot gets the current speed limit", lateLimit);
+                    assertSpeedLimit(f, lateLimit);
+                }
+                assertEquals(0, b.count("malformedInput"));
+                assertEquals(0, b.count("queriesIgnored"));
+                // a robot whose PowerStatus is another type of the same name: its samples do not decode, are counted and dropped
+                try (CyclonePeer other = new CyclonePeer(dir)) {
+                    other.endpoint("writer", "power", "rt/power_status", "truncated my_robot_msgs/PowerStatus", "");
+                    other.awaitMatched("power");
+                    long contexts = b.count("contextsIn");
+                    other.write("power", "{\"header\":{\"frame_id\":\"x\"}}");
+                    long end = System.currentTimeMillis() + TIMEOUT;
+                    while (b.count("malformedInput") < 1 && System.currentTimeMillis() < end) {
+                        Thread.sleep(20);
+                    }
+                    assertEquals("the undecodable PowerStatus is counted", 1, b.count("malformedInput"));
+                    assertEquals("and dropped", contexts, b.count("contextsIn"));
+                }
+            }
+        }
+    }
+
+    /** Waits until the engine counts a change-parameter acknowledged (by the bridge: no skill interface runs). */
+    private static void awaitAcked(EngineFixture f) throws InterruptedException {
+        long end = System.currentTimeMillis() + TIMEOUT;
+        while (f.engine.status().get("paramAcked") < 1 && System.currentTimeMillis() < end) {
+            Thread.sleep(20);
+        }
+        assertTrue("the engine's change-parameter is acknowledged by the bridge", f.engine.status().get("paramAcked") >= 1);
+    }
+
+    /** speed_limit = the current maxVelocity decision × 0.01, the set fields, the header stamped. */
+    private static void assertSpeedLimit(EngineFixture f, JsonNode limit) {
+        List<BusProbe.Message> decisions = f.probe.messages(Topics.DECISION);
+        double decided = decisions.get(decisions.size() - 1).body().path("decisions").path("maxVelocity").asDouble();
+        assertEquals(limit.toString(), decided * 0.01, limit.path("speed_limit").asDouble(), 1e-12);
+        assertEquals(limit.toString(), false, limit.path("percentage").asBoolean());
+        assertEquals(limit.toString(), "map", limit.path("header").path("frame_id").asText());
+        assertTrue(limit.toString(), limit.path("header").path("stamp").path("sec").asLong() > 1_600_000_000L);
     }
 
     /** The native key switch on a real participant refuses what it does not recognise (KeySwitchChecks). */

@@ -12,6 +12,12 @@ Driven over stdin/stdout, one JSON object per line, so a Java test can play a RO
   {"op": "await_matched", "id": "bat", "count": 1, "timeout": 30}
                                                -> {"event": "matched", "id", "count"} or {"event": "timeout", "id", "count"}
   {"op": "close", "id": "bat"}   {"op": "quit"}
+  {"op": "encode", "type": "miron_test_msgs/AllKinds", "data": {...}, "xcdr2": false, "appendable": false}
+                                               -> {"event": "encoded", "hex": "0001..."} (Cyclone's own CDR of the message)
+  {"op": "decode", "type": ..., "hex": "0001...", "appendable": false} -> {"event": "decoded", "data": {...}}
+With --codec the peer joins no domain and serves only encode and decode.
+The robot's own types (my_robot_msgs/PowerStatus, nav2_msgs/SpeedLimit, miron_test_msgs/AllKinds)
+are declared here from their .msg field lists, independently of the bridge's reading of the files.
 Every command is answered ({"event": "ok", "op"} at least); errors as {"event": "error", "message"}.
 """
 import dataclasses
@@ -19,6 +25,7 @@ import json
 import sys
 import threading
 import time
+import typing
 from dataclasses import dataclass, field
 
 from cyclonedds.core import Policy, Qos
@@ -162,6 +169,78 @@ class UnkeyedRoqmeEstimate(IdlStruct, typename="RoqmeDDSTopics::RoqmeEstimate"):
     value: t.float64 = 0.0
 
 
+def robot_types(final):
+    """The robot's own message types; final (as ROS 2 declares them) or appendable (for XCDR2's DHEADERs)."""
+    ext = annotate.final if final else annotate.appendable
+
+    @dataclass
+    @ext
+    class ChargerInfo(IdlStruct, typename="my_robot_msgs::msg::dds_::ChargerInfo_"):
+        dock_id: t.bounded_str[16] = ""
+        reachable: bool = True
+        last_seen: Time = field(default_factory=Time)
+
+    @dataclass
+    @ext
+    class PowerStatus(IdlStruct, typename="my_robot_msgs::msg::dds_::PowerStatus_"):
+        header: Header = field(default_factory=Header)
+        charge_percent: t.float32 = 0.0
+        voltage: t.float32 = 48.0
+        status: t.uint8 = 0
+        charger: ChargerInfo = field(default_factory=ChargerInfo)
+        cell_voltages: t.sequence[t.float32] = field(default_factory=list)
+
+    @dataclass
+    @ext
+    class SpeedLimit(IdlStruct, typename="nav2_msgs::msg::dds_::SpeedLimit_"):
+        header: Header = field(default_factory=Header)
+        percentage: bool = False
+        speed_limit: t.float64 = 0.0
+
+    @dataclass
+    @ext
+    class Point(IdlStruct, typename="miron_test_msgs::msg::dds_::Point_"):
+        tag: t.uint8 = 0
+        x: t.float64 = 0.0
+        y: t.float64 = 0.0
+
+    @dataclass
+    @ext
+    class AllKinds(IdlStruct, typename="miron_test_msgs::msg::dds_::AllKinds_"):
+        small: t.uint8 = 7
+        big: t.float64 = 0.0
+        flag: bool = False
+        i8: t.int8 = 0
+        i16: t.int16 = 0
+        u16: t.uint16 = 0
+        i32: t.int32 = 0
+        u32: t.uint32 = 0
+        i64: t.int64 = 0
+        u64: t.uint64 = 0
+        f32: t.float32 = 0.0
+        b: t.uint8 = 0
+        c: t.uint8 = 0
+        text: str = ""
+        short_text: t.bounded_str[8] = "short"
+        fixed: t.array[t.float64, 3] = field(default_factory=lambda: [0.0] * 3)
+        bounded: t.sequence[t.int32, 4] = field(default_factory=lambda: [1, 2])
+        unbounded: t.sequence[t.int16] = field(default_factory=list)
+        names: t.sequence[str] = field(default_factory=list)
+        fixed_names: t.array[t.bounded_str[5], 2] = field(default_factory=lambda: ["", ""])
+        flags: t.sequence[bool] = field(default_factory=list)
+        points: t.sequence[Point] = field(default_factory=list)
+        fixed_points: t.array[Point, 2] = field(default_factory=lambda: [Point(), Point()])
+        some_points: t.sequence[Point, 3] = field(default_factory=list)
+        stamp: Time = field(default_factory=Time)
+        last: t.uint8 = 0
+
+    return {"my_robot_msgs/PowerStatus": PowerStatus, "my_robot_msgs/ChargerInfo": ChargerInfo,
+            "nav2_msgs/SpeedLimit": SpeedLimit, "miron_test_msgs/AllKinds": AllKinds, "miron_test_msgs/Point": Point}
+
+
+ROBOT_TYPES = robot_types(True)
+APPENDABLE_TYPES = robot_types(False)
+
 TYPES = {
     "sensor_msgs/BatteryState": BatteryState, "std_msgs/String": String, "std_msgs/Float64": Float64,
     "std_msgs/Float32": Float32, "std_msgs/Bool": Bool, "std_msgs/Int32": Int32,
@@ -170,6 +249,17 @@ TYPES = {
     "RoqmeEventContext": RoqmeEventContext, "RoqmeEstimate": RoqmeEstimate,
     "unkeyed RoqmeDoubleContext": UnkeyedRoqmeDoubleContext, "unkeyed RoqmeEstimate": UnkeyedRoqmeEstimate,
 }
+TYPES.update(ROBOT_TYPES)
+
+
+@dataclass
+@annotate.final
+class TruncatedPowerStatus(IdlStruct, typename="my_robot_msgs::msg::dds_::PowerStatus_"):
+    """A robot whose PowerStatus is not the bridge's: same name, only the header (its samples end early)."""
+    header: Header = field(default_factory=Header)
+
+
+TYPES["truncated my_robot_msgs/PowerStatus"] = TruncatedPowerStatus
 
 out_lock = threading.Lock()
 
@@ -181,18 +271,30 @@ def emit(**event):
 
 
 def build(cls, data):
-    """A message of cls from a dict; nested dataclasses from nested dicts, absent fields default."""
+    """A message of cls from a dict; nested dataclasses from nested dicts (also in lists), absent fields default."""
     kwargs = {}
+    defaults = cls()
     for f in dataclasses.fields(cls):
         if f.name not in data:
             continue
         v = data[f.name]
-        if isinstance(v, dict) and dataclasses.is_dataclass(f.type if isinstance(f.type, type) else None):
-            v = build(f.type, v)
-        elif isinstance(v, dict):
-            v = build(globals()[f.type] if isinstance(f.type, str) else f.type, v)
+        d = getattr(defaults, f.name)
+        if isinstance(v, dict):
+            v = build(type(d), v)
+        elif isinstance(v, list) and v and isinstance(v[0], dict):
+            v = [build(element_type(cls, f.name), x) for x in v]
         kwargs[f.name] = v
     return cls(**kwargs)
+
+
+def element_type(cls, name):
+    """The dataclass a list field holds, from its annotation (sequence[Point], array[Point, 2])."""
+    hint = typing.get_type_hints(cls, include_extras=True)[name]
+    for a in typing.get_args(hint):
+        inner = getattr(a, "subtype", None)
+        if inner is not None and dataclasses.is_dataclass(inner):
+            return inner
+    raise TypeError("no struct element type for " + name)
 
 
 def encode(obj):
@@ -207,10 +309,11 @@ def encode(obj):
 
 class Peer:
     def __init__(self, domain):
-        self.dp = DomainParticipant(domain)
+        self.dp = DomainParticipant(domain) if domain >= 0 else None
         self.entities = {}  # id -> ("reader"|"writer", entity, type)
         self.lock = threading.Lock()
-        threading.Thread(target=self.poll, daemon=True).start()
+        if self.dp is not None:
+            threading.Thread(target=self.poll, daemon=True).start()
 
     def qos(self, cmd):
         policies = [Policy.Reliability.Reliable(duration(seconds=1)) if cmd.get("reliability", "reliable") == "reliable"
@@ -271,6 +374,15 @@ class Peer:
         elif op == "close":
             with self.lock:
                 self.entities.pop(cmd["id"])  # the last reference: Cyclone deletes the entity
+        elif op == "encode":
+            types = APPENDABLE_TYPES if cmd.get("appendable") else ROBOT_TYPES
+            msg = build(types[cmd["type"]], cmd.get("data", {}))
+            emit(event="encoded", hex=msg.serialize(use_version_2=bool(cmd.get("xcdr2"))).hex())
+            return
+        elif op == "decode":
+            types = APPENDABLE_TYPES if cmd.get("appendable") else ROBOT_TYPES
+            emit(event="decoded", data=encode(types[cmd["type"]].deserialize(bytes.fromhex(cmd["hex"]))))
+            return
         elif op == "quit":
             emit(event="ok", op=op)
             sys.stdout.flush()
@@ -281,7 +393,7 @@ class Peer:
 
 
 def main():
-    domain = int(sys.argv[1]) if len(sys.argv) > 1 else 0
+    domain = -1 if "--codec" in sys.argv else int(sys.argv[1]) if len(sys.argv) > 1 else 0
     peer = Peer(domain)
     emit(event="ready")
     for line in sys.stdin:

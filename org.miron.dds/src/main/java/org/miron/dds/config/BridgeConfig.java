@@ -3,13 +3,19 @@ package org.miron.dds.config;
 import java.net.InetAddress;
 import java.util.List;
 import org.miron.dds.transport.Qos;
+import org.miron.dds.types.TypeRegistry;
 
 /**
  * A bridge configuration (docs/dds.md, docs/dds-bridge.schema.json), checked: every type known,
  * every field path present in its type, every name well-formed.
  */
 public record BridgeConfig(int domain, String name, List<InetAddress> interfaces, List<ContextMapping> contexts,
-        List<DecisionMapping> decisions, List<EstimateMapping> estimates, RoqmeTopics roqme) {
+        List<DecisionMapping> decisions, List<EstimateMapping> estimates, RoqmeTopics roqme, TypeRegistry types) {
+
+    /** Whether a decision mapping answers change-parameter queries (then the bridge stands in for the skill interface). */
+    public boolean answersParameters() {
+        return decisions.stream().anyMatch(d -> d.parameter() != null);
+    }
 
     /** The RoQME context type of a value: how {@code roqme.context}'s {@code type} names it. */
     public enum ContextType {
@@ -31,8 +37,19 @@ public record BridgeConfig(int domain, String name, List<InetAddress> interfaces
             String namespace, ContextType as, Qos qos) {
     }
 
-    /** A varpoint's decision published on a ROS 2 topic ({@code std_msgs/String}, {@code Float64} or {@code Bool}). */
-    public record DecisionMapping(String varpoint, String topic, String type, Qos qos) {
+    /**
+     * A varpoint's decision published on a ROS 2 topic, into one field of a message of any known type.
+     *
+     * @param path      the field the decided value goes to ({@code data}, {@code speed_limit})
+     * @param leaf      what the field holds: a JSON number (integral for integer fields), boolean or text
+     * @param scale     multiplies a number (1 when absent)
+     * @param base      the message before the decision: every field at its default, then the mapping's {@code set}
+     * @param stamp     the message has a {@code header} whose stamp takes the decision's time
+     * @param parameter the arch-bound parameter whose change-parameter queries the bridge answers, or null
+     */
+    public record DecisionMapping(String varpoint, String topic, String type, Qos qos, String field, List<Object> path,
+            com.fasterxml.jackson.databind.JsonNode leaf, double scale, com.fasterxml.jackson.databind.node.ObjectNode base,
+            boolean stamp, String parameter) {
     }
 
     /** A metric's {@code roqme.estimate} published as {@code std_msgs/Float64}. */

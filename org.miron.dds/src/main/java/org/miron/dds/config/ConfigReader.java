@@ -1,6 +1,13 @@
 package org.miron.dds.config;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.function.Consumer;
+import org.miron.dds.types.DefinitionException;
+import org.miron.dds.types.MessagePackages;
+import org.miron.dds.types.TypeRegistry;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.util.ArrayList;
@@ -26,19 +33,65 @@ public final class ConfigReader {
     public static final String ROQME_PARTITION = "Roqme DDS partition";
     public static final List<String> ROQME_CONTEXT_TOPICS = List.of("RoqmeIntContext", "RoqmeUIntContext",
             "RoqmeDoubleContext", "RoqmeBoolContext", "RoqmeEventContext", "RoqmeEnumContext");
-    private static final Set<String> DECISION_TYPES = Set.of("std_msgs/String", "std_msgs/Float64", "std_msgs/Bool");
-    private static final String IDENT = "[A-Za-z_][A-Za-z0-9_]*";
+        private static final String IDENT = "[A-Za-z_][A-Za-z0-9_]*";
 
     private final Located doc;
-    private final TypeCatalog types;
+    private final Path base;
+    private final Consumer<String> warnings;
+    private TypeCatalog types;
+    private TypeRegistry registry = TypeRegistry.NONE;
 
-    private ConfigReader(Located doc, TypeCatalog types) {
+    private ConfigReader(Located doc, Path base, TypeCatalog types, Consumer<String> warnings) {
         this.doc = doc;
+        this.base = base;
         this.types = types;
+        this.warnings = warnings;
     }
 
+    /** A configuration whose {@code messages} paths are relative to the working directory. */
     public static BridgeConfig read(String text, TypeCatalog types) throws ConfigException {
-        return new ConfigReader(Located.parse(text), types).config();
+        try {
+            return read(text, Path.of("bridge.json"), types, w -> { });
+        } catch (DefinitionException e) {
+            throw new ConfigException(1, 1, "/messages", e.format());
+        }
+    }
+
+    /**
+     * The configuration read from {@code file} ({@code messages} are relative to its folder): a
+     * message package that does not load is a {@link DefinitionException} at its line.
+     *
+     * @param warnings receives a line per loaded type that redefines a shipped one
+     */
+    public static BridgeConfig read(String text, Path file, TypeCatalog types, Consumer<String> warnings)
+            throws ConfigException, DefinitionException {
+        Path dir = file.toAbsolutePath().getParent();
+        return new ConfigReader(Located.parse(text), dir, types, warnings).configWithPackages();
+    }
+
+    private BridgeConfig configWithPackages() throws ConfigException, DefinitionException {
+        JsonNode root = doc.root;
+        if (root.isObject() && root.has("messages")) {
+            List<Path> folders = new ArrayList<>();
+            for (JsonNode m : array(root, "", "messages")) {
+                String p = "/messages/" + folders.size();
+                if (!m.isTextual() || m.asText().isEmpty()) {
+                    throw error(p, "a path to a message package (a folder with msg/*.msg or msg/*.idl) is expected");
+                }
+                Path folder = base.resolve(m.asText()).normalize();
+                if (!Files.isDirectory(folder)) {
+                    throw error(p, "no such folder: " + folder + " (a message package, relative to the configuration file)");
+                }
+                folders.add(folder);
+            }
+            try {
+                registry = MessagePackages.load(folders, types::ships, warnings);
+            } catch (java.io.IOException e) {
+                throw error("/messages", "cannot read a message package: " + e.getMessage());
+            }
+            types = types.withPackages(registry);
+        }
+        return config();
     }
 
     private ConfigException error(String pointer, String reason) {
@@ -51,7 +104,7 @@ public final class ConfigReader {
         if (!root.isObject()) {
             throw error("", "a JSON object is expected");
         }
-        keys(root, "", Set.of("$schema", "domain", "name", "interfaces", "contexts", "decisions", "estimates", "roqme"));
+        keys(root, "", Set.of("$schema", "domain", "name", "interfaces", "messages", "contexts", "decisions", "estimates", "roqme"));
         int domain = integer(root, "", "domain", 0, 0, 232);
         String name = text(root, "", "name", "miron_dds_bridge");
         if (!name.matches(IDENT)) {
@@ -88,7 +141,15 @@ public final class ConfigReader {
         if (contexts.isEmpty() && decisions.isEmpty() && estimates.isEmpty() && roqme == null) {
             throw error("", "nothing to bridge: give contexts, decisions, estimates or roqme");
         }
-        return new BridgeConfig(domain, name, List.copyOf(interfaces), contexts, decisions, estimates, roqme);
+        for (int i = 0; i < decisions.size(); i++) {
+            for (int j = 0; j < i; j++) {
+                String pi = decisions.get(i).parameter();
+                if (pi != null && pi.equals(decisions.get(j).parameter())) {
+                    throw error("/decisions/" + i + "/parameter", "parameter " + pi + " is already answered by /decisions/" + j);
+                }
+            }
+        }
+        return new BridgeConfig(domain, name, List.copyOf(interfaces), contexts, decisions, estimates, roqme, registry);
     }
 
     private ContextMapping context(JsonNode c, String p) throws ConfigException {
@@ -98,7 +159,8 @@ public final class ConfigReader {
         String type = required(c, p, "type");
         JsonNode template = types.template(type);
         if (template == null || type.startsWith("Roqme")) {
-            throw error(p + "/type", "unknown message type " + type + " (a ROS 2 type as pkg/Name, e.g. sensor_msgs/BatteryState)");
+            throw error(p + "/type", "unknown message type " + type + " (a ROS 2 type as pkg/Name, e.g. sensor_msgs/BatteryState,"
+                    + " shipped or of a package in \"messages\")");
         }
         boolean event = c.has("as") && "event".equals(c.get("as").asText());
         String field = text(c, p, "field", event ? "" : "data");
@@ -143,16 +205,80 @@ public final class ConfigReader {
 
     private DecisionMapping decision(JsonNode d, String p) throws ConfigException {
         object(d, p);
-        keys(d, p, Set.of("varpoint", "topic", "type", "qos"));
+        keys(d, p, Set.of("varpoint", "topic", "type", "field", "scale", "set", "parameter", "qos"));
         String vp = required(d, p, "varpoint");
         if (!vp.matches(IDENT)) {
             throw error(p + "/varpoint", "a varpoint name is an identifier, got \"" + vp + "\"");
         }
         String type = text(d, p, "type", "std_msgs/String");
-        if (!DECISION_TYPES.contains(type)) {
-            throw error(p + "/type", "a decision is published as std_msgs/String (enum), std_msgs/Float64 (numeric) or std_msgs/Bool, got " + type);
+        ObjectNode template = types.template(type);
+        if (template == null || type.startsWith("Roqme")) {
+            throw error(p + "/type", "unknown message type " + type + " (a ROS 2 type as pkg/Name, shipped or of a package in \"messages\")");
         }
-        return new DecisionMapping(vp, rosTopic(d, p), type, qos(d, p, Qos.LATCHED));
+        String field = text(d, p, "field", "data");
+        List<Object> path = FieldPath.parse(field);
+        if (path == null) {
+            throw error(p + "/field", "not a field path: \"" + field + "\" (names and [index], e.g. speed_limit or header.frame_id)");
+        }
+        JsonNode leaf = FieldPath.resolveTemplate(template, path);
+        if (leaf == null || leaf.isContainerNode()) {
+            throw error(p + (d.has("field") ? "/field" : ""), type + " has no value field \"" + field + "\"; its fields: "
+                    + FieldPath.describe(template));
+        }
+        if (!FieldPath.set(template.deepCopy(), path, leaf)) {
+            throw error(p + "/field", "\"" + field + "\" of " + type + " is an element of an array that has none by default;"
+                    + " a decision goes to a field or an element of a fixed array");
+        }
+        double scale = 1;
+        if (d.has("scale")) {
+            if (!d.get("scale").isNumber() || !Double.isFinite(d.get("scale").asDouble())) {
+                throw error(p + "/scale", "a number is expected");
+            }
+            if (!leaf.isNumber()) {
+                throw error(p + "/scale", "only a number field can be scaled; \"" + field + "\" of " + type + " is not one");
+            }
+            scale = d.get("scale").asDouble();
+        }
+        ObjectNode base = template.deepCopy();
+        if (d.has("set")) {
+            JsonNode set = d.get("set");
+            object(set, p + "/set");
+            for (Iterator<String> it = set.fieldNames(); it.hasNext();) {
+                String k = it.next();
+                String sp = p + "/set/" + k.replace("~", "~0").replace("/", "~1");
+                List<Object> kp = FieldPath.parse(k);
+                JsonNode target = kp == null ? null : FieldPath.resolveTemplate(template, kp);
+                if (target == null || target.isObject() || kp.equals(path)) {
+                    throw error(sp, kp != null && kp.equals(path) ? "\"" + k + "\" is the field the decision goes to"
+                            : type + " has no value field \"" + k + "\"; its fields: " + FieldPath.describe(template));
+                }
+                JsonNode v = set.get(k);
+                if (target.isNumber() != v.isNumber() || target.isBoolean() != v.isBoolean() || target.isTextual() != v.isTextual()
+                        || target.isArray() != v.isArray() || target.isIntegralNumber() && !v.isIntegralNumber()) {
+                    throw error(sp, "\"" + k + "\" of " + type + " holds " + kind(target) + ", not " + v);
+                }
+                if (!FieldPath.set(base, kp, v)) {
+                    throw error(sp, "\"" + k + "\" of " + type + " cannot be set (an element past the end of an array)");
+                }
+            }
+        }
+        String parameter = null;
+        if (d.has("parameter")) {
+            parameter = text(d, p, "parameter", null);
+            if (!parameter.matches(IDENT)) {
+                throw error(p + "/parameter", "the arch-bound parameter's name (as in the model's in arch { parameter ... }), got \"" + parameter + "\"");
+            }
+            if (!leaf.isNumber() && !leaf.isBoolean()) {
+                throw error(p + "/parameter", "a parameter's value is a number or boolean; \"" + field + "\" of " + type + " holds " + kind(leaf));
+            }
+        }
+        JsonNode stamp = FieldPath.resolveTemplate(template, List.of("header", "stamp"));
+        boolean stamped = stamp != null && stamp.has("sec") && stamp.has("nanosec") && !"header".equals(path.get(0));
+        return new DecisionMapping(vp, rosTopic(d, p), type, qos(d, p, Qos.LATCHED), field, path, leaf, scale, base, stamped, parameter);
+    }
+
+    private static String kind(JsonNode v) {
+        return v.isIntegralNumber() ? "an integer" : v.isNumber() ? "a number" : v.isBoolean() ? "a boolean" : v.isArray() ? "an array" : "a string";
     }
 
     private EstimateMapping estimate(JsonNode e, String p) throws ConfigException {

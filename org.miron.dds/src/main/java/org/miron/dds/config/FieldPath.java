@@ -66,6 +66,39 @@ public final class FieldPath {
         return n;
     }
 
+    /** Sets the value at the path of a message (every step present); false when a step is missing. */
+    static boolean set(JsonNode message, List<Object> path, JsonNode value) {
+        JsonNode n = message;
+        for (int i = 0; i < path.size() - 1; i++) {
+            Object step = path.get(i);
+            n = step instanceof Integer k ? (n.isArray() ? n.get(k) : null) : (n.isObject() ? n.get((String) step) : null);
+            if (n == null) {
+                return false;
+            }
+        }
+        Object last = path.get(path.size() - 1);
+        if (last instanceof Integer k) {
+            if (!n.isArray() || k >= n.size()) {
+                return false;
+            }
+            ((com.fasterxml.jackson.databind.node.ArrayNode) n).set(k, value);
+            return true;
+        }
+        if (!n.isObject() || !n.has((String) last)) {
+            return false;
+        }
+        ((com.fasterxml.jackson.databind.node.ObjectNode) n).set((String) last, value);
+        return true;
+    }
+
+    /** Sets the value at the path of a copy of {@code base}. */
+    public static com.fasterxml.jackson.databind.node.ObjectNode with(com.fasterxml.jackson.databind.node.ObjectNode base, List<Object> path,
+            JsonNode value) {
+        com.fasterxml.jackson.databind.node.ObjectNode copy = base.deepCopy();
+        set(copy, path, value);
+        return copy;
+    }
+
     /** The value fields of a message, as paths, for an error message. */
     static String describe(JsonNode template) {
         List<String> out = new ArrayList<>();

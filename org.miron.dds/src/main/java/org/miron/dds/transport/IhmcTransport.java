@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
+import org.miron.dds.types.TypeRegistry;
 import us.ihmc.pubsub.Domain;
 import us.ihmc.pubsub.DomainFactory;
 import us.ihmc.pubsub.TopicDataType;
@@ -41,6 +42,7 @@ public final class IhmcTransport implements DdsTransport {
     private final Participant participant;
     private final List<Consumer<String>> matchingListeners = new CopyOnWriteArrayList<>();
     private final Map<String, Boolean> keyedTypes = new HashMap<>(); // registered types: keyed or not
+    private final TypeRegistry registry;
 
     /**
      * @param domainId   the DDS domain (ROS_DOMAIN_ID)
@@ -48,6 +50,12 @@ public final class IhmcTransport implements DdsTransport {
      * @param interfaces the addresses to bind (127.0.0.1: this machine only)
      */
     public IhmcTransport(int domainId, String name, List<InetAddress> interfaces) throws DdsException {
+        this(domainId, name, interfaces, TypeRegistry.NONE);
+    }
+
+    /** As above, with the types of the loaded message packages too. */
+    public IhmcTransport(int domainId, String name, List<InetAddress> interfaces, TypeRegistry registry) throws DdsException {
+        this.registry = registry;
         try {
             domain = DomainFactory.getDomain(DomainFactory.PubSubImplementation.FAST_RTPS);
             ParticipantProfile profile = ROS2NodeInterface.createParticipantAttributes(domainId, false,
@@ -60,16 +68,55 @@ public final class IhmcTransport implements DdsTransport {
     }
 
     /** The types this transport can carry, without a participant (for checking a configuration). */
-    public static final TypeCatalog CATALOG = new TypeCatalog() {
-        @Override
-        public ObjectNode template(String type) {
-            TopicDataType<?> t = Types.lookup(type, false);
-            return t == null ? null : empty(t);
-        }
-    };
+    public static final TypeCatalog CATALOG = catalog(TypeRegistry.NONE);
+
+    /** The types this transport can carry with the loaded packages' types. */
+    public static TypeCatalog catalog(TypeRegistry registry) {
+        return new TypeCatalog() {
+            @Override
+            public ObjectNode template(String type) {
+                TopicDataType<?> t = Types.lookup(type, false, registry);
+                return t == null ? null : empty(t);
+            }
+
+            @Override
+            public TypeCatalog withPackages(TypeRegistry packages) {
+                return catalog(packages);
+            }
+
+            @Override
+            public boolean ships(String type) {
+                return Types.shipped(type);
+            }
+        };
+    }
+
+    /** Whether the DDS library ships the ROS 2 type {@code pkg/Name} (a loaded package that redefines it wins). */
+    public static boolean ships(String type) {
+        return Types.shipped(type);
+    }
 
     private static <T> ObjectNode empty(TopicDataType<T> t) {
-        return JsonOut.of(t, t.createData());
+        return t instanceof DefinedType d ? d.template() : JsonOut.of(t, t.createData());
+    }
+
+    /** The message as a JSON tree, or null with the reason given to the listener. */
+    private static <T> ObjectNode json(TopicDataType<T> type, T data) {
+        if (data instanceof DefinedType.Sample s) {
+            if (s.error != null) {
+                throw new IllegalArgumentException(s.error);
+            }
+            return s.json;
+        }
+        return JsonOut.of(type, data);
+    }
+
+    @SuppressWarnings("unchecked")
+    private static <T> T fill(TopicDataType<T> type, JsonNode message) {
+        if (type instanceof DefinedType d) {
+            return (T) d.fill(message);
+        }
+        return JsonIn.fill(type, message);
     }
 
     /**
@@ -77,9 +124,9 @@ public final class IhmcTransport implements DdsTransport {
      * property in Fast-DDS, so one participant carries a type either keyed or unkeyed, never both.
      */
     private TopicDataType<?> type(String name, boolean keyed) throws DdsException {
-        TopicDataType<?> t = Types.lookup(name, keyed);
+        TopicDataType<?> t = Types.lookup(name, keyed, registry);
         if (t == null) {
-            throw new DdsException(keyed && Types.lookup(name, false) != null ? name + " has no key: only RoQME's types are keyed"
+            throw new DdsException(keyed && Types.lookup(name, false, registry) != null ? name + " has no key: only RoQME's types are keyed"
                     : "unknown message type " + name);
         }
         synchronized (this) {
@@ -170,7 +217,7 @@ public final class IhmcTransport implements DdsTransport {
                 }
                 ObjectNode json;
                 try {
-                    json = JsonOut.of(type, data);
+                    json = json(type, data);
                 } catch (RuntimeException e) {
                     listener.undecodable("cannot read a " + spec.type() + " on " + spec.name() + ": " + e);
                     return;
@@ -219,7 +266,7 @@ public final class IhmcTransport implements DdsTransport {
                         throw new IllegalStateException("writer on " + spec.name() + " is closed");
                     }
                     try {
-                        pub.write(JsonIn.fill(type, message));
+                        pub.write(fill(type, message));
                     } catch (IOException e) {
                         throw new IllegalStateException("cannot write to " + spec.name() + ": " + e.getMessage(), e);
                     }

@@ -1,6 +1,7 @@
 package org.miron.dds.transport;
 
 import java.lang.reflect.InvocationTargetException;
+import org.miron.dds.types.TypeRegistry;
 import us.ihmc.pubsub.TopicDataType;
 
 /**
@@ -17,6 +18,30 @@ final class Types {
      * asked of a type that has none (only RoQME's types are keyed; ROS 2's never are).
      */
     static TopicDataType<?> lookup(String name, boolean keyed) {
+        return lookup(name, keyed, TypeRegistry.NONE);
+    }
+
+    /**
+     * As {@link #lookup(String, boolean)}, a loaded package's definition first (it wins over the
+     * library's class of the same name), then the library's, then the bridge's own copies.
+     */
+    static TopicDataType<?> lookup(String name, boolean keyed, TypeRegistry registry) {
+        if (registry.isLoaded(name)) {
+            return keyed ? null : new DefinedType(registry, registry.get(name));
+        }
+        TopicDataType<?> shipped = library(name, keyed);
+        if (shipped != null || keyed || registry.get(name) == null) {
+            return shipped;
+        }
+        return new DefinedType(registry, registry.get(name));
+    }
+
+    /** Whether the library ships a class for the ROS 2 type. */
+    static boolean shipped(String name) {
+        return library(name, false) != null;
+    }
+
+    private static TopicDataType<?> library(String name, boolean keyed) {
         RoqmeType.Kind k = RoqmeType.Kind.of(name);
         if (k != null) {
             return new RoqmeType(k, keyed);

@@ -1,6 +1,7 @@
 package org.miron.dsl.tests;
 
 import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
 import java.io.File;
@@ -79,6 +80,13 @@ public class ExamplesTest {
         assertEquals("noBattery", rule.getName());
         BinaryExpression consequence = (BinaryExpression) rule.getImplies().get(0).getTerm();
         assertEquals("dock", ((EnumValue) consequence.getRight()).getLiteral().getName());
+    }
+
+    @Test
+    public void nav2() {
+        check("examples/nav2/nav2.roqme");
+        MironModel model = (MironModel) check("examples/nav2/nav2.miron").getContents().get(0);
+        assertNotNull(model);
     }
 
     @Test

@@ -13,6 +13,7 @@ public class WorldSchemaTest {
     public void theExampleWorldsFollowTheSchema() throws Exception {
         JsonSchemaFile.WORLD.assertValid(RepositoryRoot.resolve("examples/intralogistics/world.json"));
         JsonSchemaFile.WORLD.assertValid(RepositoryRoot.resolve("examples/hospital-delivery/world.json"));
+        JsonSchemaFile.WORLD.assertValid(RepositoryRoot.resolve("examples/nav2/world.json"));
     }
 
     @Test
