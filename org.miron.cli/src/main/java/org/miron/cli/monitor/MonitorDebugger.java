@@ -71,7 +71,14 @@ final class MonitorDebugger implements AutoCloseable {
 
     private void poll() {
         while (open) {
-            refresh();
+            try {
+                refresh();
+            } catch (RuntimeException e) {
+                if (!open) {
+                    return; // closing under a request
+                }
+                throw e;
+            }
             try {
                 Thread.sleep(POLL_MS);
             } catch (InterruptedException e) {
@@ -295,8 +302,7 @@ final class MonitorDebugger implements AutoCloseable {
 
     @Override
     public void close() {
-        open = false;
-        poller.interrupt();
+        open = false; // not interrupted: ZeroMQ throws on an interrupted receive; it ends within a request's timeout
         try {
             poller.join(3000);
         } catch (InterruptedException e) {

@@ -1,0 +1,301 @@
+package org.miron.cli.monitor;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertNotNull;
+import static org.junit.Assert.assertTrue;
+
+import java.io.File;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.Assume;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.miron.cli.MironCli;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.FreePorts;
+import org.miron.runtime.broker.Broker;
+import org.miron.runtime.bus.Topics;
+import org.miron.testkit.runtime.BusProbe;
+import org.miron.testkit.runtime.GrootClient;
+import org.zeromq.ZMQ;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import picocli.CommandLine;
+
+/**
+ * The live page's debugger in headless Chromium over a real `miron execute --repeat --monitor M
+ * --groot G` process on a real bus: a breakpoint set by clicking a node pauses the tree (the page
+ * says so, the node is marked, the blackboards are shown), continue lets it go, step pauses before
+ * the root's next tick, a forced FAILURE sends the Fallback to its other branch (on the page and on
+ * the bus); search and fold; an unknown node is refused on the page; and a monitor attached to
+ * another process's Groot2 server shows "detached" when that executor goes away, and attaches again
+ * when one comes back. Skipped, saying so, where no Chromium is installed.
+ */
+public class DebugPageBrowserTest {
+    private static final long TIMEOUT_MS = 60_000;
+    /** mission: start, then primary (mark, drive 300 ms) or, if it fails, backup (a minute). */
+    private static final String TREE = """
+            <root BTCPP_format="4" main_tree_to_execute="Main">
+              <BehaviorTree ID="Main">
+                <Sequence name="mission">
+                  <Script name="start" code="mission_started := true"/>
+                  <Fallback name="choose">
+                    <SubTree ID="Primary" name="primary"/>
+                    <Sleep name="backup" msec="60000"/>
+                  </Fallback>
+                </Sequence>
+              </BehaviorTree>
+              <BehaviorTree ID="Primary">
+                <Sequence name="primary_steps">
+                  <Script name="mark" code="route := 'primary'"/>
+                  <Sleep name="drive" msec="300"/>
+                </Sequence>
+              </BehaviorTree>
+            </root>
+            """;
+    private static final String STATUS = "document.getElementById('debug-status').textContent";
+    private static final String MESSAGE = "document.getElementById('debug-message').textContent";
+
+    @Rule
+    public TemporaryFolder tmp = new TemporaryFolder();
+
+    private static String chromium() {
+        String chromium = HeadlessChromium.find().orElse(null);
+        if (chromium == null) {
+            System.err.println("DebugPageBrowserTest: skipped, no chromium on the PATH (apt-get install chromium)");
+        }
+        Assume.assumeNotNull(chromium);
+        return chromium;
+    }
+
+    @Test
+    public void breakpointsStepsAndForcedResultsFromThePage() throws Exception {
+        String chromium = chromium();
+        try (HeadlessChromium browser = new HeadlessChromium(chromium, tmp.newFolder("profile").toPath())) {
+            Endpoints ep = Endpoints.freeLoopback();
+            int groot = GrootClient.freePortPair();
+            int monitor = FreePorts.take(1)[0];
+            try (Broker broker = new Broker(ep).start(); BusProbe bus = new BusProbe(ep.busOut(), Topics.BT_STATUS)) {
+                Executor executor = new Executor(ep, "--monitor", Integer.toString(monitor), "--groot", Integer.toString(groot));
+                try {
+                    browser.open(executor.awaitMonitorUrl());
+                    Page page = new Page(browser);
+                    page.await(STATUS, s -> s.startsWith("running (attached"), "attached");
+                    String mark = page.id("mark");
+                    String drive = page.id("drive");
+
+                    // a breakpoint before mark, set by clicking the node then the button
+                    page.click(mark);
+                    page.run("document.getElementById('debug-break-pre').click()");
+                    page.await(STATUS, s -> s.equals("paused before mark (" + mark + ")"), "paused at mark");
+                    page.awaitTrue("node('" + mark + "').classList.contains('paused')", "mark marked as paused");
+                    page.awaitTrue("node('" + mark + "').classList.contains('breakpoint')", "mark marked with a breakpoint");
+                    page.await("document.querySelector('#blackboard tr[data-name=\"primary/route\"] td').textContent",
+                            s -> s.equals("primary"), "the subtree's blackboard");
+                    page.awaitTrue("!!document.querySelector('#blackboard tr[data-name=\"Main/mission_started\"]')",
+                            "the main tree's blackboard");
+
+                    // continue: the tree goes on (drive runs, on the bus), and pauses at mark again next mission
+                    long before = lastSeq(bus);
+                    page.run("document.getElementById('debug-continue').click()");
+                    assertNotNull("drive runs after continue", bus.await(Topics.BT_STATUS,
+                            m -> m.path("seq").asLong() > before && m.path("node").asText().equals(drive)
+                                    && m.path("to").asText().equals("RUNNING"), TIMEOUT_MS));
+                    page.await(STATUS, s -> s.equals("paused before mark (" + mark + ")"), "paused at mark again");
+
+                    // step: the tick under way ends (mark succeeds, drive runs), and the tree pauses before the root
+                    long beforeStep = lastSeq(bus);
+                    page.run("document.getElementById('debug-step').click()");
+                    page.await(STATUS, s -> s.equals("paused before mission (0), stepping"), "paused before the root");
+                    assertNotNull("mark ticked during the step", bus.await(Topics.BT_STATUS, m -> m.path("seq").asLong() > beforeStep
+                            && m.path("node").asText().equals(mark) && m.path("to").asText().equals("SUCCESS"), TIMEOUT_MS));
+                    page.await("Array.from(document.querySelectorAll('#hooks td')).map(td=>td.textContent).join(',')",
+                            s -> s.contains("mission,step,always"), "the step's breakpoint listed");
+
+                    // mark's breakpoint cleared, the step continued, drive forced to FAILURE: the Fallback takes backup
+                    page.click(mark);
+                    page.run("document.getElementById('debug-clear').click()");
+                    page.await("document.querySelector('#hooks').textContent", s -> !s.contains("mark"), "mark's breakpoint gone");
+                    page.run("document.getElementById('debug-continue').click()");
+                    page.await(STATUS, s -> s.startsWith("running"), "running again");
+                    page.click(drive);
+                    page.run("document.getElementById('debug-force-FAILURE').click()");
+                    String backup = page.id("backup");
+                    assertNotNull("backup runs on the bus", bus.await(Topics.BT_STATUS,
+                            m -> m.path("node").asText().equals(backup) && m.path("to").asText().equals("RUNNING"), TIMEOUT_MS));
+                    page.awaitTrue("node('" + backup + "').classList.contains('status-running')", "backup running on the page");
+                    page.awaitTrue("node('" + drive + "').classList.contains('forced')", "drive marked as forced");
+                    assertNotNull("drive failed on the bus", bus.await(Topics.BT_STATUS,
+                            m -> m.path("node").asText().equals(drive) && m.path("to").asText().equals("FAILURE"), TIMEOUT_MS));
+
+                    // search and fold
+                    page.run("const s=document.getElementById('search');s.value='DRIV';s.dispatchEvent(new Event('input'))");
+                    page.await("document.getElementById('search-count').textContent", s -> s.equals("1 found"), "search");
+                    page.awaitTrue("node('" + drive + "').classList.contains('match')", "drive matched");
+                    String primary = page.id("primary");
+                    page.click(primary);
+                    page.run("document.getElementById('debug-fold').click()");
+                    page.awaitTrue("getComputedStyle(node('" + drive + "')).display==='none'"
+                            + "&&getComputedStyle(node('" + mark + "')).display==='none'"
+                            + "&&getComputedStyle(node('" + primary + "')).display!=='none'", "primary's children hidden");
+                    page.run("document.getElementById('debug-fold').click()");
+                    page.awaitTrue("getComputedStyle(node('" + drive + "')).display!=='none'", "unfolded");
+
+                    // an unknown node is refused, with a message on the page
+                    page.run("debugRequest('breakpoint',{node:'9.9.9',position:'PRE'})");
+                    page.await(MESSAGE, s -> s.startsWith("unknown node 9.9.9"), "refused");
+                    browser.screenshot(Path.of("build", "screenshots", "live-debug.png")); // docs/images/live-debug.png is a copy
+                } finally {
+                    executor.stop();
+                }
+            }
+        }
+    }
+
+    @Test
+    public void aMonitorShowsDetachedWhenTheExecutorGoesAndAttachesWhenOneComes() throws Exception {
+        String chromium = chromium();
+        try (HeadlessChromium browser = new HeadlessChromium(chromium, tmp.newFolder("profile").toPath())) {
+            Endpoints ep = Endpoints.freeLoopback();
+            int groot = GrootClient.freePortPair();
+            Path tree = treeFile();
+            try (Broker broker = new Broker(ep).start();
+                    MonitorServer monitor = LiveMonitor.start(0, tree, ep, LiveMonitor.plainNames()).attachGroot(groot)) {
+                browser.open(monitor.url());
+                Page page = new Page(browser);
+                page.await(STATUS, s -> s.startsWith("detached"), "detached before any executor");
+                Executor first = new Executor(ep, "--groot", Integer.toString(groot));
+                try {
+                    page.await(STATUS, s -> s.startsWith("running (attached to 127.0.0.1:" + groot), "attached");
+                } finally {
+                    first.stop();
+                }
+                page.await(STATUS, s -> s.startsWith("detached: no answer from the Groot2 server at 127.0.0.1:" + groot),
+                        "detached once the executor is gone");
+                page.run("debugRequest('step')");
+                page.await(MESSAGE, s -> s.startsWith("detached"), "a request while detached is refused");
+                Executor second = new Executor(ep, "--groot", Integer.toString(groot));
+                try {
+                    page.await(STATUS, s -> s.startsWith("running (attached"), "attached to the new executor");
+                } finally {
+                    second.stop();
+                }
+            }
+        }
+    }
+
+    private Path treeFile() throws Exception {
+        Path tree = tmp.getRoot().toPath().resolve("mission.xml");
+        if (!Files.exists(tree)) {
+            Files.writeString(tree, TREE);
+        }
+        return tree;
+    }
+
+    private static long lastSeq(BusProbe bus) {
+        return bus.messages(Topics.BT_STATUS).stream().mapToLong(m -> m.body() == null ? 0 : m.body().path("seq").asLong())
+                .max().orElse(0);
+    }
+
+    /** The page in the browser: expressions evaluated until they hold. */
+    private static final class Page {
+        private final HeadlessChromium browser;
+
+        Page(HeadlessChromium browser) {
+            this.browser = browser;
+        }
+
+        void run(String script) throws Exception {
+            browser.evaluate("(()=>{" + script + ";return true;})()");
+        }
+
+        /** The page id of the node named so. */
+        String id(String name) throws Exception {
+            return await("(Array.from(document.querySelectorAll('#tree g[data-id]')).find(g=>nodeName(g)==='" + name
+                    + "')||{dataset:{}}).dataset.id||''", s -> !s.isEmpty(), "node " + name + " on the page");
+        }
+
+        void click(String id) throws Exception {
+            run("node('" + id + "').dispatchEvent(new MouseEvent('click',{bubbles:true}))");
+            awaitTrue("debug.selected==='" + id + "'", "selected " + id);
+        }
+
+        void awaitTrue(String expression, String what) throws Exception {
+            await("String(" + expression + ")", s -> s.equals("true"), what);
+        }
+
+        String await(String expression, Predicate<String> holds, String what) throws Exception {
+            long end = System.currentTimeMillis() + TIMEOUT_MS;
+            String last = null;
+            while (System.currentTimeMillis() < end) {
+                JsonNode value = browser.evaluate("(()=>{try{return String(" + expression + ")}catch(e){return null}})()");
+                last = value == null || value.isNull() ? null : value.asText();
+                if (last != null && holds.test(last)) {
+                    return last;
+                }
+                Thread.sleep(50);
+            }
+            JsonNode status = browser.evaluate(STATUS);
+            JsonNode message = browser.evaluate(MESSAGE);
+            throw new AssertionError(what + ": last " + last + "; debug status " + status + ", message " + message);
+        }
+    }
+
+    /** `miron execute TREE --repeat --period 20 ...` as a real process on the test's bus. */
+    private final class Executor {
+        private final Process process;
+        private final Path out;
+        private final Path err;
+
+        Executor(Endpoints ep, String... options) throws Exception {
+            out = Files.createTempFile(tmp.getRoot().toPath(), "execute", ".out");
+            err = Files.createTempFile(tmp.getRoot().toPath(), "execute", ".err");
+            List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                    "-cp", classpath(), MironCli.class.getName(), "execute", treeFile().toString(), "--repeat", "--period", "20",
+                    "--request", ep.request(), "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--skill-events", ep.skillEvents()));
+            command.addAll(List.of(options));
+            process = new ProcessBuilder(command).redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+        }
+
+        String awaitMonitorUrl() throws Exception {
+            Pattern url = Pattern.compile("live monitor: (http://127\\.0\\.0\\.1:\\d+/)");
+            long end = System.currentTimeMillis() + TIMEOUT_MS;
+            while (System.currentTimeMillis() < end && process.isAlive()) {
+                Matcher m = url.matcher(Files.readString(out, StandardCharsets.UTF_8));
+                if (m.find()) {
+                    return m.group(1);
+                }
+                Thread.sleep(50);
+            }
+            throw new AssertionError("no monitor: " + Files.readString(out) + Files.readString(err));
+        }
+
+        void stop() throws Exception {
+            process.destroy();
+            if (!process.waitFor(20, TimeUnit.SECONDS)) {
+                process.destroyForcibly();
+            }
+            assertEquals("stopped by SIGTERM: " + Files.readString(err), 143, process.exitValue());
+        }
+    }
+
+    private static String classpath() {
+        List<String> parts = new ArrayList<>();
+        for (Class<?> c : new Class<?>[] { MironCli.class, CommandLine.class, ZMQ.class, ObjectMapper.class }) {
+            parts.add(c.getProtectionDomain().getCodeSource().getLocation().getPath());
+        }
+        parts.add(System.getProperty("java.class.path"));
+        return String.join(File.pathSeparator, parts);
+    }
+}
