@@ -72,7 +72,8 @@ final class DebugPanel {
               $('debug-switch').textContent=text;}
             function explanation(e){debug.explanations[e.varpoint]=e;
               const v=JSON.stringify(e.value).replace(/^"|"$/g,'');row('explanations',e.varpoint,v+(e.because?': '+e.because:''));showSwitch();}
-            function showDebug(s){debug.state=s;const status=$('debug-status');
+            function showDebug(s){if(debug.state&&s.revision!==undefined&&s.revision<debug.state.revision)return; // an older reply
+              debug.state=s;const status=$('debug-status');
               status.className=s.paused?'paused':'';
               status.textContent=!s.attached?s.message:s.paused?'paused before '+s.paused.name+' ('+s.paused.node+')'+(s.stepping?', stepping':''):'running ('+s.message+')';
               ['breakpoint','forced','paused'].forEach(c=>document.querySelectorAll('#tree g.'+c).forEach(g=>g.classList.remove(c)));
@@ -109,7 +110,7 @@ final class DebugPanel {
             $('fold-all').onclick=()=>document.querySelectorAll('#tree g[data-kind="subtree"]').forEach(g=>fold(g.dataset.id,true));
             $('unfold-all').onclick=()=>document.querySelectorAll('#tree g.folded').forEach(g=>fold(g.dataset.id,false));
             $('search').addEventListener('input',e=>search(e.target.value));
-            events.addEventListener('open',loadDebug);
+            events.addEventListener('open',()=>{debug.state=null;loadDebug();}); // maybe a new monitor: its revisions start again
             events.addEventListener('debug',e=>showDebug(JSON.parse(e.data)));
             events.addEventListener('explanation',e=>explanation(JSON.parse(e.data)));
             events.addEventListener('snapshot',e=>Object.values(JSON.parse(e.data).explanations||{}).forEach(explanation));

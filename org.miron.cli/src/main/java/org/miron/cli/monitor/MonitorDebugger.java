@@ -55,10 +55,17 @@ final class MonitorDebugger implements AutoCloseable {
     private String message = "attaching…";
     private final Map<Integer, KnownHook> hooks = new TreeMap<>();
     private Integer paused;
+    /** How many times the tree paused (a new pause at the same node is news to the page). */
+    private long pauses;
     /** The root carries the debugger's step breakpoint. */
     private boolean stepping;
     private JsonNode blackboards = Json.MAPPER.createObjectNode();
     private String lastPublished = "";
+    /**
+     * Counts the states published: an HTTP reply computed before a notice can reach the page after
+     * the notice's event, and the page keeps the state of the highest revision.
+     */
+    private long revision;
 
     /** Attaches to the Groot2 server on 127.0.0.1:port (and port + 1); {@code pages} gets its events. */
     MonitorDebugger(int port, Consumer<MonitorState.Event> pages) {
@@ -143,6 +150,7 @@ final class MonitorDebugger implements AutoCloseable {
         KnownHook hook = hooks.get(uid);
         if (hook == null || hook.mode() == Mode.BREAKPOINT) {
             paused = uid; // a hook of another client: taken as a breakpoint until the next dump says
+            pauses++;
             publish();
         }
     }
@@ -272,8 +280,12 @@ final class MonitorDebugger implements AutoCloseable {
         return entry;
     }
 
-    /** {"attached","message","server","paused":{node,name}|null,"stepping","hooks":[...],"blackboards":{}} */
+    /** {"attached","message","server","paused":{node,name,uid}|null,"stepping","pauses","hooks":[...],"blackboards":{},"revision"} */
     synchronized ObjectNode state() {
+        return body().put("revision", revision);
+    }
+
+    private ObjectNode body() {
         ObjectNode state = Json.MAPPER.createObjectNode();
         state.put("attached", attached).put("message", message).put("server", groot.address());
         GrootTreeMap.Entry at = paused == null || tree == null ? null : tree.byUid(paused);
@@ -282,7 +294,7 @@ final class MonitorDebugger implements AutoCloseable {
         } else {
             state.putObject("paused").put("node", at.pageId()).put("name", at.name()).put("uid", at.uid());
         }
-        state.put("stepping", stepping);
+        state.put("stepping", stepping).put("pauses", pauses);
         ArrayNode list = state.putArray("hooks");
         hooks.values().forEach(h -> list.addObject().put("node", h.node()).put("uid", h.uid())
                 .put("name", tree.byUid(h.uid()).name()).put("mode", h.mode().name()).put("position", h.position().name())
@@ -293,10 +305,11 @@ final class MonitorDebugger implements AutoCloseable {
     }
 
     private void publish() {
-        String now = state().toString();
+        String now = body().toString();
         if (!now.equals(lastPublished)) {
             lastPublished = now;
-            pages.accept(new MonitorState.Event("debug", now));
+            revision++;
+            pages.accept(new MonitorState.Event("debug", state().toString()));
         }
     }
 

@@ -108,15 +108,19 @@ public class DebugPageBrowserTest {
 
                     // continue: the tree goes on (drive runs, on the bus), and pauses at mark again next mission
                     long before = lastSeq(bus);
+                    long pauses = page.pauses();
                     page.run("document.getElementById('debug-continue').click()");
                     assertNotNull("drive runs after continue", bus.await(Topics.BT_STATUS,
                             m -> m.path("seq").asLong() > before && m.path("node").asText().equals(drive)
                                     && m.path("to").asText().equals("RUNNING"), TIMEOUT_MS));
+                    page.awaitTrue("debug.state.pauses>" + pauses, "a new pause");
                     page.await(STATUS, s -> s.equals("paused before mark (" + mark + ")"), "paused at mark again");
 
                     // step: the tick under way ends (mark succeeds, drive runs), and the tree pauses before the root
                     long beforeStep = lastSeq(bus);
+                    long pausesBeforeStep = page.pauses();
                     page.run("document.getElementById('debug-step').click()");
+                    page.awaitTrue("debug.state.pauses>" + pausesBeforeStep, "a new pause");
                     page.await(STATUS, s -> s.equals("paused before mission (0), stepping"), "paused before the root");
                     assertNotNull("mark ticked during the step", bus.await(Topics.BT_STATUS, m -> m.path("seq").asLong() > beforeStep
                             && m.path("node").asText().equals(mark) && m.path("to").asText().equals("SUCCESS"), TIMEOUT_MS));
@@ -226,6 +230,10 @@ public class DebugPageBrowserTest {
                     + "')||{dataset:{}}).dataset.id||''", s -> !s.isEmpty(), "node " + name + " on the page");
         }
 
+        long pauses() throws Exception {
+            return Long.parseLong(await("debug.state.pauses", s -> s.matches("\\d+"), "the pause count"));
+        }
+
         void click(String id) throws Exception {
             run("node('" + id + "').dispatchEvent(new MouseEvent('click',{bubbles:true}))");
             awaitTrue("debug.selected==='" + id + "'", "selected " + id);
@@ -246,9 +254,9 @@ public class DebugPageBrowserTest {
                 }
                 Thread.sleep(50);
             }
-            JsonNode status = browser.evaluate(STATUS);
+            JsonNode state = browser.evaluate("JSON.stringify(debug.state)");
             JsonNode message = browser.evaluate(MESSAGE);
-            throw new AssertionError(what + ": last " + last + "; debug status " + status + ", message " + message);
+            throw new AssertionError(what + ": last " + last + "; debugger " + state + ", message " + message);
         }
     }
 
@@ -259,8 +267,9 @@ public class DebugPageBrowserTest {
         private final Path err;
 
         Executor(Endpoints ep, String... options) throws Exception {
-            out = Files.createTempFile(tmp.getRoot().toPath(), "execute", ".out");
-            err = Files.createTempFile(tmp.getRoot().toPath(), "execute", ".err");
+            Path logs = Files.createDirectories(Path.of("build", "debug-page")); // kept for a failure's post-mortem
+            out = Files.createTempFile(logs, "execute", ".out");
+            err = Files.createTempFile(logs, "execute", ".err");
             List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                     "-cp", classpath(), MironCli.class.getName(), "execute", treeFile().toString(), "--repeat", "--period", "20",
                     "--request", ep.request(), "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--skill-events", ep.skillEvents()));
