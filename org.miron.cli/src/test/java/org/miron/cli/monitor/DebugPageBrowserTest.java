@@ -26,6 +26,8 @@ import org.miron.runtime.broker.Broker;
 import org.miron.runtime.bus.Topics;
 import org.miron.testkit.runtime.BusProbe;
 import org.miron.testkit.runtime.GrootClient;
+import org.zeromq.SocketType;
+import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -44,7 +46,10 @@ import picocli.CommandLine;
  */
 public class DebugPageBrowserTest {
     private static final long TIMEOUT_MS = 60_000;
-    /** mission: start, then primary (mark, drive 300 ms) or, if it fails, backup (a minute). */
+    /**
+     * mission: start, then primary (mark, drive 300 ms) or, if it fails, a variant Switch over
+     * {route_sel}, unset: its default, backup (a minute).
+     */
     private static final String TREE = """
             <root BTCPP_format="4" main_tree_to_execute="Main">
               <BehaviorTree ID="Main">
@@ -52,7 +57,11 @@ public class DebugPageBrowserTest {
                   <Script name="start" code="mission_started := true"/>
                   <Fallback name="choose">
                     <SubTree ID="Primary" name="primary"/>
-                    <Sleep name="backup" msec="60000"/>
+                    <Switch2 name="route_switch" variable="{route_sel}" case_1="left" case_2="right">
+                      <Sleep name="left_way" msec="60000"/>
+                      <Sleep name="right_way" msec="60000"/>
+                      <Sleep name="backup" msec="60000"/>
+                    </Switch2>
                   </Fallback>
                 </Sequence>
               </BehaviorTree>
@@ -105,6 +114,7 @@ public class DebugPageBrowserTest {
                             s -> s.equals("primary"), "the subtree's blackboard");
                     page.awaitTrue("!!document.querySelector('#blackboard tr[data-name=\"Main/mission_started\"]')",
                             "the main tree's blackboard");
+                    browser.screenshot(Path.of("build", "screenshots", "live-debug.png")); // docs/images/live-debug.png is a copy
 
                     // continue: the tree goes on (drive runs, on the bus), and pauses at mark again next mission
                     long before = lastSeq(bus);
@@ -143,6 +153,24 @@ public class DebugPageBrowserTest {
                     assertNotNull("drive failed on the bus", bus.await(Topics.BT_STATUS,
                             m -> m.path("node").asText().equals(drive) && m.path("to").asText().equals("FAILURE"), TIMEOUT_MS));
 
+                    // the variant Switch shows the decision that chose its branch, and why
+                    String why = "{\"seq\":1,\"decisions\":{\"route\":\"left\"},\"changed\":[\"route\"],"
+                            + "\"why\":{\"route\":{\"because\":\"rule blocked (corridor = BLOCKED)\",\"rules\":[\"blocked\"]}}}";
+                    page.click(page.id("route_switch"));
+                    try (ZContext zmq = new ZContext(); ZMQ.Socket pub = zmq.createSocket(SocketType.PUB)) {
+                        pub.connect(ep.busIn());
+                        String shown = "document.getElementById('debug-switch').textContent";
+                        long end = System.currentTimeMillis() + TIMEOUT_MS;
+                        JsonNode text = null;
+                        while (System.currentTimeMillis() < end && (text == null || !text.asText().contains("blocked"))) {
+                            pub.sendMore(Topics.DECISION); // again until it shows: a PUB drops what goes before the subscription
+                            pub.send(why);
+                            Thread.sleep(100);
+                            text = browser.evaluate(shown);
+                        }
+                        assertEquals("variant switch of route = left: rule blocked (corridor = BLOCKED)", text.asText());
+                    }
+
                     // search and fold
                     page.run("const s=document.getElementById('search');s.value='DRIV';s.dispatchEvent(new Event('input'))");
                     page.await("document.getElementById('search-count').textContent", s -> s.equals("1 found"), "search");
@@ -159,7 +187,6 @@ public class DebugPageBrowserTest {
                     // an unknown node is refused, with a message on the page
                     page.run("debugRequest('breakpoint',{node:'9.9.9',position:'PRE'})");
                     page.await(MESSAGE, s -> s.startsWith("unknown node 9.9.9"), "refused");
-                    browser.screenshot(Path.of("build", "screenshots", "live-debug.png")); // docs/images/live-debug.png is a copy
                 } finally {
                     executor.stop();
                 }
