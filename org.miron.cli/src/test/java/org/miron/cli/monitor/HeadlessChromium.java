@@ -101,6 +101,8 @@ final class HeadlessChromium implements AutoCloseable {
 
     /** Saves what the page shows, as PNG, into {@code file} (for the docs). */
     void screenshot(Path file) throws Exception {
+        call("Emulation.setDeviceMetricsOverride", Json.MAPPER.createObjectNode().put("width", 1400).put("height", 820)
+                .put("deviceScaleFactor", 1).put("mobile", false));
         JsonNode shot = call("Page.captureScreenshot", Json.MAPPER.createObjectNode().put("format", "png")
                 .put("captureBeyondViewport", true));
         Files.createDirectories(file.toAbsolutePath().getParent());
