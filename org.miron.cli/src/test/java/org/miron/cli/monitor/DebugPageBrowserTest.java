@@ -50,7 +50,7 @@ public class DebugPageBrowserTest {
      * mission: start, then primary (mark, drive 300 ms) or, if it fails, a variant Switch over
      * {route_sel}, unset: its default, backup (a minute).
      */
-    private static final String TREE = """
+    static final String TREE = """
             <root BTCPP_format="4" main_tree_to_execute="Main">
               <BehaviorTree ID="Main">
                 <Sequence name="mission">
@@ -73,8 +73,9 @@ public class DebugPageBrowserTest {
               </BehaviorTree>
             </root>
             """;
-    private static final String STATUS = "document.getElementById('debug-status').textContent";
-    private static final String MESSAGE = "document.getElementById('debug-message').textContent";
+    private static final String STATUS = DebugPage.STATUS;
+    private static final String MESSAGE = DebugPage.MESSAGE;
+    /** The tree of the tests, also run on BehaviorTree.CPP by DebugPageBtcppTest. */
 
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
@@ -99,7 +100,7 @@ public class DebugPageBrowserTest {
                 Executor executor = new Executor(ep, "--monitor", Integer.toString(monitor), "--groot", Integer.toString(groot));
                 try {
                     browser.open(executor.awaitMonitorUrl());
-                    Page page = new Page(browser);
+                    DebugPage page = new DebugPage(browser, TIMEOUT_MS);
                     page.await(STATUS, s -> s.startsWith("running (attached"), "attached");
                     String mark = page.id("mark");
                     String drive = page.id("drive");
@@ -204,7 +205,7 @@ public class DebugPageBrowserTest {
             try (Broker broker = new Broker(ep).start();
                     MonitorServer monitor = LiveMonitor.start(0, tree, ep, LiveMonitor.plainNames()).attachGroot(groot)) {
                 browser.open(monitor.url());
-                Page page = new Page(browser);
+                DebugPage page = new DebugPage(browser, TIMEOUT_MS);
                 page.await(STATUS, s -> s.startsWith("detached"), "detached before any executor");
                 Executor first = new Executor(ep, "--groot", Integer.toString(groot));
                 try {
@@ -237,54 +238,6 @@ public class DebugPageBrowserTest {
     private static long lastSeq(BusProbe bus) {
         return bus.messages(Topics.BT_STATUS).stream().mapToLong(m -> m.body() == null ? 0 : m.body().path("seq").asLong())
                 .max().orElse(0);
-    }
-
-    /** The page in the browser: expressions evaluated until they hold. */
-    private static final class Page {
-        private final HeadlessChromium browser;
-
-        Page(HeadlessChromium browser) {
-            this.browser = browser;
-        }
-
-        void run(String script) throws Exception {
-            browser.evaluate("(()=>{" + script + ";return true;})()");
-        }
-
-        /** The page id of the node named so. */
-        String id(String name) throws Exception {
-            return await("(Array.from(document.querySelectorAll('#tree g[data-id]')).find(g=>nodeName(g)==='" + name
-                    + "')||{dataset:{}}).dataset.id||''", s -> !s.isEmpty(), "node " + name + " on the page");
-        }
-
-        long pauses() throws Exception {
-            return Long.parseLong(await("debug.state.pauses", s -> s.matches("\\d+"), "the pause count"));
-        }
-
-        void click(String id) throws Exception {
-            run("node('" + id + "').dispatchEvent(new MouseEvent('click',{bubbles:true}))");
-            awaitTrue("debug.selected==='" + id + "'", "selected " + id);
-        }
-
-        void awaitTrue(String expression, String what) throws Exception {
-            await("String(" + expression + ")", s -> s.equals("true"), what);
-        }
-
-        String await(String expression, Predicate<String> holds, String what) throws Exception {
-            long end = System.currentTimeMillis() + TIMEOUT_MS;
-            String last = null;
-            while (System.currentTimeMillis() < end) {
-                JsonNode value = browser.evaluate("(()=>{try{return String(" + expression + ")}catch(e){return null}})()");
-                last = value == null || value.isNull() ? null : value.asText();
-                if (last != null && holds.test(last)) {
-                    return last;
-                }
-                Thread.sleep(50);
-            }
-            JsonNode state = browser.evaluate("JSON.stringify(debug.state)");
-            JsonNode message = browser.evaluate(MESSAGE);
-            throw new AssertionError(what + ": last " + last + "; debugger " + state + ", message " + message);
-        }
     }
 
     /** `miron execute TREE --repeat --period 20 ...` as a real process on the test's bus. */
