@@ -34,6 +34,7 @@ final class DebugRoutes {
             if (debugger == null) {
                 throw new MonitorDebugger.Refused(503, "no Groot2 server to debug with: start the executor with --groot PORT");
             }
+            debugger.asked();
             boolean post = exchange.getRequestMethod().equals("POST");
             if (action.equals("state") && !post) {
                 reply(exchange, 200, debugger.state().toString());

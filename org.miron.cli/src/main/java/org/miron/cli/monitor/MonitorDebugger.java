@@ -2,6 +2,7 @@ package org.miron.cli.monitor;
 
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 
 import org.miron.runtime.Json;
@@ -18,8 +19,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 /**
  * The live page's debugger: a Groot2 client of the executor's Groot2 server (ours or BT.CPP's
  * Groot2Publisher), so the page sets breakpoints and forces results through the very hooks Groot2
- * uses. It polls the server every {@link #POLL_MS} (the hooks and the blackboards; that is also the
- * heartbeat that keeps the hooks enabled), learns from the server's notices where the tree paused,
+ * uses. It polls the server every {@link #POLL_MS} while a page is connected or asks (the hooks and
+ * the blackboards; that is also the heartbeat that keeps the hooks enabled), learns from the server's notices where the tree paused,
  * and tells the pages its state as a {@code debug} event whenever it changes. A server that stops
  * answering makes it "detached"; it attaches again, reading the tree anew, when one answers.
  *
@@ -29,6 +30,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  */
 final class MonitorDebugger implements AutoCloseable {
     static final long POLL_MS = 500;
+    /** Without a page connected, polling stops this long after the last request. */
+    private static final long IDLE_NANOS = 5_000_000_000L;
     private static final int TIMEOUT_MS = 1500;
 
     /** A request from the page the debugger cannot do; {@code status} is the HTTP status to answer. */
@@ -48,6 +51,9 @@ final class MonitorDebugger implements AutoCloseable {
 
     private final GrootConnection groot;
     private final Consumer<MonitorState.Event> pages;
+    private final BooleanSupplier watched;
+    /** When the page last asked something (System.nanoTime()). */
+    private volatile long lastAskedNanos = System.nanoTime();
     private final Thread poller;
     private volatile boolean open = true;
     private GrootTreeMap tree;
@@ -67,9 +73,13 @@ final class MonitorDebugger implements AutoCloseable {
      */
     private long revision;
 
-    /** Attaches to the Groot2 server on 127.0.0.1:port (and port + 1); {@code pages} gets its events. */
-    MonitorDebugger(int port, Consumer<MonitorState.Event> pages) {
+    /**
+     * Attaches to the Groot2 server on 127.0.0.1:port (and port + 1); {@code pages} gets its events;
+     * {@code watched} says whether a page is connected.
+     */
+    MonitorDebugger(int port, Consumer<MonitorState.Event> pages, BooleanSupplier watched) {
         this.pages = pages;
+        this.watched = watched;
         this.groot = new GrootConnection("127.0.0.1", port, TIMEOUT_MS, this::reached);
         poller = new Thread(this::poll, "miron-monitor-groot");
         poller.setDaemon(true);
@@ -79,7 +89,11 @@ final class MonitorDebugger implements AutoCloseable {
     private void poll() {
         while (open) {
             try {
-                refresh();
+                // Polled only while someone looks: a page that went away stops the requests, and the
+                // server's own heartbeat then disables the hooks after 5 s, so a paused tree goes on.
+                if (watched.getAsBoolean() || System.nanoTime() - lastAskedNanos < IDLE_NANOS) {
+                    refresh();
+                }
             } catch (RuntimeException e) {
                 if (!open) {
                     return; // closing under a request
@@ -153,6 +167,11 @@ final class MonitorDebugger implements AutoCloseable {
             pauses++;
             publish();
         }
+    }
+
+    /** A request from a page came (it keeps the polling on while no page is connected). */
+    void asked() {
+        lastAskedNanos = System.nanoTime();
     }
 
     /** Sets a breakpoint on the page's node before (PRE) or after (POST) its tick, once or always. */

@@ -140,7 +140,7 @@ public final class MonitorServer implements AutoCloseable {
         if (debugger != null) {
             throw new IllegalStateException("already attached to a Groot2 server");
         }
-        debugger = new MonitorDebugger(grootPort, state::publish);
+        debugger = new MonitorDebugger(grootPort, state::publish, () -> state.subscribers() > 0);
         debug = new DebugRoutes(debugger);
         return this;
     }

@@ -82,4 +82,37 @@ public class DebugRoutesTest {
             assertTrue("the forced SUCCESS ended the minute's wait", !robot.isAlive());
         }
     }
+
+    @Test
+    public void aTreePausedByAPageThatWentAwayGoesOnAfterTheServersHeartbeat() throws Exception {
+        Path tree = tmp.getRoot().toPath().resolve("after.xml");
+        Files.writeString(tree, "<root BTCPP_format=\"4\"><BehaviorTree ID=\"Main\"><Sequence name=\"main\">"
+                + "<Sleep name=\"first\" msec=\"200\"/><Script name=\"after\" code=\"m := 2\"/><Sleep name=\"wait\" msec=\"60000\"/>"
+                + "</Sequence></BehaviorTree></root>");
+        Endpoints ep = Endpoints.freeLoopback();
+        int groot = GrootClient.freePortPair();
+        java.util.concurrent.CountDownLatch afterDone = new java.util.concurrent.CountDownLatch(1);
+        try (LiveExecutor executor = new LiveExecutor(ep).build(tree, (time, node, from, to) -> {
+            if (node.name().equals("after") && to == org.miron.executor.NodeStatus.SUCCESS) {
+                afterDone.countDown();
+            }
+        }).serveGroot(groot); MonitorServer monitor = LiveMonitor.start(0, tree, ep, LiveMonitor.plainNames()).attachGroot(groot)) {
+            long end = System.currentTimeMillis() + 30_000;
+            while (!Json.MAPPER.readTree(get(monitor, "state").body()).path("attached").asBoolean()) {
+                assertTrue("attached", System.currentTimeMillis() < end);
+                Thread.sleep(50);
+            }
+            assertEquals(200, post(monitor, "breakpoint", "{\"node\":\"0.1\"}").statusCode());
+            Thread robot = new Thread(() -> executor.run(Duration.ofMillis(20)), "robot");
+            robot.setDaemon(true);
+            robot.start();
+            while (Json.MAPPER.readTree(get(monitor, "state").body()).path("paused").isNull()) {
+                assertTrue("paused at after", System.currentTimeMillis() < end);
+                Thread.sleep(50);
+            }
+            // nobody asks any more: the monitor stops polling, the server's heartbeat frees the tree
+            assertTrue("the tree goes on without a page", afterDone.await(30, java.util.concurrent.TimeUnit.SECONDS));
+            executor.stop();
+        }
+    }
 }
