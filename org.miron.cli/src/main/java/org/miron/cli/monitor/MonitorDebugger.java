@@ -80,7 +80,12 @@ final class MonitorDebugger implements AutoCloseable {
     MonitorDebugger(int port, Consumer<MonitorState.Event> pages, BooleanSupplier watched) {
         this.pages = pages;
         this.watched = watched;
-        this.groot = new GrootConnection("127.0.0.1", port, TIMEOUT_MS, this::reached);
+        this.groot = new GrootConnection("127.0.0.1", port, TIMEOUT_MS, notice -> {
+            Integer uid = GrootConnection.reachedUid(notice);
+            if (uid != null) {
+                reached(uid);
+            }
+        });
         poller = new Thread(this::poll, "miron-monitor-groot");
         poller.setDaemon(true);
         poller.start();

@@ -10,7 +10,7 @@ import java.util.Arrays;
 import java.util.Collection;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.function.IntConsumer;
+import java.util.function.Consumer;
 import org.msgpack.jackson.dataformat.MessagePackMapper;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
@@ -68,7 +68,7 @@ public final class GrootConnection implements AutoCloseable {
     private final ZContext zmq = new ZContext();
     private final String address;
     private final String noticeAddress;
-    private final int timeoutMs;
+    private int timeoutMs;
     private final ZMQ.Socket handshakes;
     private final Thread noticeThread;
     private volatile boolean open = true;
@@ -76,9 +76,10 @@ public final class GrootConnection implements AutoCloseable {
 
     /**
      * Connects to the server at host:port (ZeroMQ connects when the server is there, and again when
-     * it comes back); {@code notices} is told the uid of every hook reached, on a thread of its own.
+     * it comes back); {@code notices} gets every message of the server's PUB as it came (frames), on
+     * a thread of its own: {@link #reachedUid} reads a BREAKPOINT_REACHED.
      */
-    public GrootConnection(String host, int port, int timeoutMs, IntConsumer notices) {
+    public GrootConnection(String host, int port, int timeoutMs, Consumer<List<byte[]>> notices) {
         this.address = "tcp://" + host + ":" + port;
         this.noticeAddress = "tcp://" + host + ":" + (port + 1);
         this.timeoutMs = timeoutMs;
@@ -106,7 +107,7 @@ public final class GrootConnection implements AutoCloseable {
         return socket;
     }
 
-    private void readNotices(ZMQ.Socket subscriber, IntConsumer notices) {
+    private void readNotices(ZMQ.Socket subscriber, Consumer<List<byte[]>> notices) {
         while (open) {
             ZMsg notice;
             try {
@@ -114,19 +115,34 @@ public final class GrootConnection implements AutoCloseable {
             } catch (RuntimeException closing) {
                 return; // the context is closing
             }
-            if (notice == null || notice.size() != 2) {
-                continue;
-            }
-            byte[] header = notice.pop().getData();
-            String uid = notice.popString();
-            if (header.length == GrootProtocol.REQUEST_HEADER_SIZE && header[1] == GrootProtocol.BREAKPOINT_REACHED) {
-                try {
-                    notices.accept(Integer.parseInt(uid.trim()));
-                } catch (NumberFormatException malformed) {
-                    // not a notice we can place: drop it
-                }
+            if (notice != null) {
+                List<byte[]> frames = new ArrayList<>();
+                notice.forEach(frame -> frames.add(frame.getData()));
+                notice.destroy();
+                notices.accept(frames);
             }
         }
+    }
+
+    /** The node uid of a BREAKPOINT_REACHED notice (header, uid in decimal), or null for anything else. */
+    public static Integer reachedUid(List<byte[]> notice) {
+        if (notice.size() != 2 || notice.get(0).length != GrootProtocol.REQUEST_HEADER_SIZE
+                || notice.get(0)[1] != GrootProtocol.BREAKPOINT_REACHED) {
+            return null;
+        }
+        try {
+            return Integer.parseInt(text(notice.get(1)).trim());
+        } catch (NumberFormatException malformed) {
+            return null;
+        }
+    }
+
+    /** How long a request waits for its reply from now on. */
+    public synchronized GrootConnection timeoutMs(int ms) {
+        timeoutMs = ms;
+        requests.setReceiveTimeOut(ms);
+        requests.setSendTimeOut(ms);
+        return this;
     }
 
     /**
@@ -182,23 +198,14 @@ public final class GrootConnection implements AutoCloseable {
     }
 
     /** Sends a request of this type with these text parts; its reply's parts (the header first). */
-    public synchronized List<byte[]> request(byte type, String... parts) throws GrootException {
-        if (!open) {
-            throw new GrootException("the connection to " + address() + " is closed", false);
-        }
-        GrootProtocol.Header header = new GrootProtocol.Header(GrootProtocol.PROTOCOL_ID, type, IDS.incrementAndGet());
-        ZMsg message = new ZMsg();
-        message.add(header.bytes());
+    public List<byte[]> request(byte type, String... parts) throws GrootException {
+        List<byte[]> message = new ArrayList<>();
+        message.add(new GrootProtocol.Header(GrootProtocol.PROTOCOL_ID, type, IDS.incrementAndGet()).bytes());
         Arrays.stream(parts).forEach(part -> message.add(part.getBytes(StandardCharsets.UTF_8)));
-        ZMsg reply = message.send(requests, true) ? ZMsg.recvMsg(requests) : null;
-        if (reply == null) {
-            zmq.destroySocket(requests);
-            requests = newRequestSocket();
+        List<byte[]> out = raw(message);
+        if (out == null) {
             throw new GrootException("no answer from the Groot2 server at " + address() + " within " + timeoutMs + " ms", false);
         }
-        List<byte[]> out = new ArrayList<>();
-        reply.forEach(frame -> out.add(frame.getData()));
-        reply.destroy();
         if (out.size() == 2 && text(out.get(0)).equals("error")) {
             throw new GrootException(address() + " refused: " + text(out.get(1)), true);
         }
@@ -210,6 +217,28 @@ public final class GrootConnection implements AutoCloseable {
                 || type == GrootProtocol.HOOKS_DUMP)) {
             throw new GrootException(address() + " answered without a body", true);
         }
+        return out;
+    }
+
+    /**
+     * Sends these parts as they are (a test sends malformed requests so); the reply's parts, or null
+     * when none came in time (the REQ socket is then made again).
+     */
+    public synchronized List<byte[]> raw(List<byte[]> parts) throws GrootException {
+        if (!open) {
+            throw new GrootException("the connection to " + address() + " is closed", false);
+        }
+        ZMsg message = new ZMsg();
+        parts.forEach(message::add);
+        ZMsg reply = message.send(requests, true) ? ZMsg.recvMsg(requests) : null;
+        if (reply == null) {
+            zmq.destroySocket(requests);
+            requests = newRequestSocket();
+            return null;
+        }
+        List<byte[]> out = new ArrayList<>();
+        reply.forEach(frame -> out.add(frame.getData()));
+        reply.destroy();
         return out;
     }
 
