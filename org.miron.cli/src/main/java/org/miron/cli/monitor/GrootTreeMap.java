@@ -73,7 +73,7 @@ final class GrootTreeMap {
             throw new IllegalArgumentException("node " + node.getTagName() + " has no _uid");
         }
         boolean call = node.getTagName().equals("SubTree");
-        String name = call ? (node.hasAttribute("name") ? node.getAttribute("name") : node.getAttribute("ID")) : node.getAttribute("name");
+        String name = call && !node.hasAttribute("name") ? callName(node) : node.getAttribute("name");
         Entry entry = new Entry(Integer.parseInt(uid), pageId, name.isEmpty() ? node.getTagName() : name, node.getTagName());
         byPageId.put(pageId, entry);
         byUid.put(entry.uid(), entry);
@@ -94,6 +94,16 @@ final class GrootTreeMap {
                 walk(child, pageId + "." + i++);
             }
         }
+    }
+
+    /**
+     * A SubTree call's name: the library writes none, but its {@code _fullpath} ends with it
+     * ({@code parent/name}), or with {@code ID::uid} when the call has no name.
+     */
+    private static String callName(Element call) {
+        String path = call.getAttribute("_fullpath");
+        String last = path.substring(path.lastIndexOf('/') + 1);
+        return last.isEmpty() || last.contains("::") ? call.getAttribute("ID") : last;
     }
 
     private Element instance(String fullPath) {
