@@ -32,6 +32,8 @@ final class MonitorDebugger implements AutoCloseable {
     static final long POLL_MS = 500;
     /** Without a page connected, polling stops this long after the last request. */
     private static final long IDLE_NANOS = 5_000_000_000L;
+    /** Every this many polls the tree is read again: a new one (another executor) is attached anew. */
+    private static final int TREE_EVERY = 10;
     private static final int TIMEOUT_MS = 1500;
 
     /** A request from the page the debugger cannot do; {@code status} is the HTTP status to answer. */
@@ -57,6 +59,9 @@ final class MonitorDebugger implements AutoCloseable {
     private final Thread poller;
     private volatile boolean open = true;
     private GrootTreeMap tree;
+    /** The server's FULLTREE as last read, and how many polls since the attachment. */
+    private String treeXml;
+    private long polls;
     private boolean attached;
     private String message = "attaching…";
     private final Map<Integer, KnownHook> hooks = new TreeMap<>();
@@ -115,8 +120,12 @@ final class MonitorDebugger implements AutoCloseable {
 
     private synchronized void refresh() {
         try {
+            if (attached && ++polls % TREE_EVERY == 0 && !groot.fullTree().equals(treeXml)) {
+                detach("attaching to a new tree…"); // an executor restarted with another tree between two polls
+            }
             if (!attached) {
-                GrootTreeMap read = GrootTreeMap.parse(groot.fullTree());
+                treeXml = groot.fullTree();
+                GrootTreeMap read = GrootTreeMap.parse(treeXml);
                 // a breakpoint's notice is lost if it goes before the subscriber is there
                 groot.awaitSubscriber(2000);
                 tree = read;
