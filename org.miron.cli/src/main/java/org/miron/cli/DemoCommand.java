@@ -120,6 +120,11 @@ public class DemoCommand implements Callable<Integer> {
                     + "Groot2Publisher does (breakpoints, status, blackboards; docs/bt-semantics.md, \"Groot2\")")
     Integer grootPort;
 
+    @Option(names = "--monitor-groot", paramLabel = "PORT",
+            description = "the Groot2 server on 127.0.0.1 the live page debugs through (breakpoints, forced results, "
+                    + "blackboards); default: --groot's PORT")
+    Integer monitorGrootPort;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -256,7 +261,8 @@ public class DemoCommand implements Callable<Integer> {
             result = new Demo(generated.resolve(name + ".io.json"), tree, steps, table,
                     out, endpoints, console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
                     .world(liveWorld, worldMs).requirements(requirements)
-                    .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).groot(grootPort).run();
+                    .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).groot(grootPort)
+                    .monitorGroot(monitorGrootPort != null ? monitorGrootPort : grootPort).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());
         } catch (Demo.GrootBindException e) {

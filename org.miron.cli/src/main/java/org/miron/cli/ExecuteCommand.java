@@ -70,6 +70,11 @@ public final class ExecuteCommand implements Callable<Integer> {
                     + "Groot2Publisher does: the tree with uids, statuses, blackboards, breakpoints (docs/bt-semantics.md, \"Groot2\")")
     Integer grootPort;
 
+    @Option(names = "--monitor-groot", paramLabel = "PORT",
+            description = "the Groot2 server on 127.0.0.1 the live page debugs through (breakpoints, forced results, "
+                    + "blackboards): another executor's, e.g. miron-btcpp-run --groot PORT; default: --groot's PORT")
+    Integer monitorGrootPort;
+
     @Override
     public Integer call() {
         if (!Files.isRegularFile(treeFile)) {
@@ -86,6 +91,16 @@ public final class ExecuteCommand implements Callable<Integer> {
                 return 2;
             }
             System.out.println("live monitor: " + monitor.url());
+            Integer debugPort = monitorGrootPort != null ? monitorGrootPort : grootPort;
+            if (debugPort != null) {
+                if (debugPort < 1 || debugPort > 65534) {
+                    System.err.println("miron execute: error: the Groot2 port must be 1 to 65534 (it uses the next one too): " + debugPort);
+                    monitor.close();
+                    return 2;
+                }
+                monitor.attachGroot(debugPort);
+                System.out.println("live monitor: debugs through Groot2 on 127.0.0.1:" + debugPort);
+            }
         }
         try (MonitorServer page = monitor; LiveExecutor executor = new LiveExecutor(endpoints)) {
             try {

@@ -59,6 +59,7 @@ public final class Demo {
     private ModelNames names = ModelNames.none();
     private Integer monitorPort;
     private Integer grootPort;
+    private Integer monitorGrootPort;
     private Path btcppRunner;
     private LiveWorld world;
     private long worldMs;
@@ -135,6 +136,12 @@ public final class Demo {
         return this;
     }
 
+    /** The Groot2 server the live page debugs through (null: none; usually the executor's, {@link #groot}). */
+    public Demo monitorGroot(Integer port) {
+        this.monitorGrootPort = port;
+        return this;
+    }
+
     /** Serves the live monitor page on 127.0.0.1:port while the demo runs (null: none). */
     public Demo monitor(Integer port) {
         this.monitorPort = port;
@@ -165,6 +172,10 @@ public final class Demo {
                         : LiveMonitor.start(monitorPort, tree, endpoints, names::qualified)) {
             if (monitor != null) {
                 out.println("MIRoN demo: live monitor on " + monitor.url() + " (open it in a browser)");
+                if (monitorGrootPort != null) {
+                    monitor.attachGroot(monitorGrootPort);
+                    out.println("MIRoN demo: the live monitor debugs through Groot2 on 127.0.0.1:" + monitorGrootPort);
+                }
             }
             Narrator narrator = new Narrator(out, engine.model());
             try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)

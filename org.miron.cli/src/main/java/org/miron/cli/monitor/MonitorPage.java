@@ -7,7 +7,8 @@ import org.miron.diagram.SvgWriter;
  * numbers its status messages), coloured by status as events arrive, and beside it the variation
  * points' values and the metrics. Plain HTML and a few lines of script (EventSource), no framework.
  * Everything the page shows can be read from its DOM: {@code g[data-id]} nodes carry a
- * {@code status-<status>} class, the tables' rows a {@code data-name}.
+ * {@code status-<status>} class, the tables' rows a {@code data-name}. The debugging section
+ * (breakpoints, forced results, blackboard, search, fold) is {@link DebugPanel}'s.
  */
 public final class MonitorPage {
     private MonitorPage() {
@@ -31,13 +32,14 @@ public final class MonitorPage {
                 #connection{font-size:13px;margin-bottom:1em}.off{color:#dc2626}.on{color:#16a34a}
                 .legend span{display:inline-block;padding:0 6px;margin:2px;border:3px solid;border-radius:4px;font-size:12px}
                 %2$s
-                </style></head><body>
+                %5$s</style></head><body>
                 <div id="tree">%3$s</div>
                 <aside>
                 <h2>%1$s</h2>
                 <div id="connection" class="off">connecting…</div>
                 <div class="legend"><span style="border-color:#f59e0b">running</span><span style="border-color:#16a34a">success</span>
                 <span style="border-color:#dc2626">failure</span><span style="border-color:#9ca3af">skipped</span></div>
+                %6$s
                 <h3>Variation points</h3><table id="varpoints"><tbody></tbody></table>
                 <h3>Metrics</h3><table id="metrics"><tbody></tbody></table>
                 <h3>Requirements</h3><table id="requirements"><tbody></tbody></table>
@@ -84,9 +86,11 @@ public final class MonitorPage {
                 events.addEventListener('requirement',e=>requirement(JSON.parse(e.data)));
                 events.addEventListener('metric',e=>{const m=JSON.parse(e.data);row('metrics',m.name,m.value);});
                 </script>
+                <script>
+                %7$s</script>
                 </body></html>
                 """.formatted(escape(title), SvgWriter.STYLE, svg.replace("<style>" + SvgWriter.STYLE + "</style>", ""),
-                        switches.replace("</", "<\\/"));
+                        switches.replace("</", "<\\/"), DebugPanel.CSS, DebugPanel.HTML, DebugPanel.SCRIPT);
     }
 
     static String escape(String text) {

@@ -43,6 +43,9 @@ public final class MonitorServer implements AutoCloseable {
     private final BusClient bus;
     private final byte[] page;
     private volatile boolean open = true;
+    /** Breakpoints and forced results, once attached to a Groot2 server ({@link #attachGroot}). */
+    private volatile MonitorDebugger debugger;
+    private volatile DebugRoutes debug = new DebugRoutes(null);
 
     /**
      * Starts serving on 127.0.0.1:{@code port} (0: any free port) the page {@code html} and the state
@@ -57,6 +60,7 @@ public final class MonitorServer implements AutoCloseable {
         server.createContext("/", this::page);
         server.createContext("/state", this::state);
         server.createContext("/events", this::events);
+        server.createContext("/debug/", exchange -> debug.handle(exchange));
         this.bus = new BusClient("monitor", busIn, busOut, List.of(Topics.BT_STATUS, Topics.BT_TREE, Topics.REQUIREMENT, Topics.VARIANT_PREFIX,
                 Topics.BLACKBOARD_PREFIX, Topics.DECISION, Topics.ESTIMATE), state::onBus);
         bus.start();
@@ -128,6 +132,19 @@ public final class MonitorServer implements AutoCloseable {
         }
     }
 
+    /**
+     * Debugs through the Groot2 server on 127.0.0.1:{@code grootPort} (the executor's, Java or
+     * BehaviorTree.CPP): the page's breakpoints and forced results become that server's hooks.
+     */
+    public MonitorServer attachGroot(int grootPort) {
+        if (debugger != null) {
+            throw new IllegalStateException("already attached to a Groot2 server");
+        }
+        debugger = new MonitorDebugger(grootPort, state::publish, () -> state.subscribers() > 0);
+        debug = new DebugRoutes(debugger);
+        return this;
+    }
+
     /** Pages connected now (tests wait for theirs). */
     public int connectedPages() {
         return state.subscribers();
@@ -136,6 +153,9 @@ public final class MonitorServer implements AutoCloseable {
     @Override
     public void close() {
         open = false;
+        if (debugger != null) {
+            debugger.close();
+        }
         server.stop(0);
         bus.close();
         threads.shutdownNow();

@@ -37,6 +37,8 @@ final class MonitorState {
     private final Map<String, String> statuses = new LinkedHashMap<>();
     private final Map<String, JsonNode> varpoints = new LinkedHashMap<>();
     private final Map<String, Double> metrics = new LinkedHashMap<>();
+    /** The latest explanation of each varpoint's decision. */
+    private final Map<String, JsonNode> explanations = new LinkedHashMap<>();
     /** The latest requirement events (miron.requirement), oldest first, at most {@link #REQUIREMENT_EVENTS}. */
     private final java.util.ArrayDeque<JsonNode> requirements = new java.util.ArrayDeque<>();
     static final int REQUIREMENT_EVENTS = 20;
@@ -94,6 +96,7 @@ final class MonitorState {
                 return false;
             }
             m.path("decisions").fields().forEachRemaining(d -> varpoint(d.getKey(), d.getValue()));
+            m.path("why").fields().forEachRemaining(w -> explanation(w.getKey(), m, w.getValue()));
         } else if (topic.equals(Topics.REQUIREMENT)) {
             if (!m.path("name").isTextual() || !m.path("verdict").isTextual() || !m.path("time").isNumber()) {
                 return false;
@@ -133,8 +136,29 @@ final class MonitorState {
         broadcast(new Event("varpoint", event.toString()));
     }
 
+    /**
+     * Why the engine chose a varpoint's value ({@code miron.decision}'s {@code why}): the page shows
+     * it on the variant Switch that the varpoint drives.
+     */
+    private void explanation(String vp, JsonNode decision, JsonNode why) {
+        ObjectNode event = Json.MAPPER.createObjectNode().put("varpoint", vp);
+        event.set("value", decision.path("decisions").path(vp));
+        event.put("because", why.path("because").asText(""));
+        event.set("rules", why.path("rules"));
+        event.put("seq", decision.path("seq").asLong());
+        synchronized (this) {
+            explanations.put(vp, event);
+        }
+        broadcast(new Event("explanation", event.toString()));
+    }
+
     private void broadcast(Event event) {
         subscribers.forEach(s -> s.send(event));
+    }
+
+    /** Hands an event that does not come from the bus (the debugger's) to every page. */
+    void publish(Event event) {
+        broadcast(event);
     }
 
     /** Subscribes a page: it gets the whole state at once, then every change. */
@@ -153,7 +177,7 @@ final class MonitorState {
         return subscribers.size();
     }
 
-    /** {"tree","statuses":{node: status},"varpoints":{},"metrics":{},"requirements":[event...],"seq","rejected"} */
+    /** {"tree","statuses":{node: status},"varpoints":{},"metrics":{},"requirements":[event...],"explanations":{vp: event},"seq","rejected"} */
     synchronized ObjectNode snapshot() {
         ObjectNode state = Json.MAPPER.createObjectNode();
         state.put("tree", tree);
@@ -164,6 +188,8 @@ final class MonitorState {
         ObjectNode mt = state.putObject("metrics");
         metrics.forEach(mt::put);
         requirements.forEach(state.putArray("requirements")::add);
+        ObjectNode why = state.putObject("explanations");
+        explanations.forEach(why::set);
         state.put("seq", lastStatusSeq);
         state.put("rejected", rejected.get());
         return state;

@@ -4,7 +4,14 @@
  * (org.miron.diagram's run-time view) and starts {@link org.miron.cli.monitor.MonitorServer}, the
  * JDK's HTTP server on 127.0.0.1 serving {@link org.miron.cli.monitor.MonitorPage} and server-sent
  * events; {@code MonitorState} keeps what the page shows from the bus (node statuses, varpoint
- * values, metrics).
+ * values, metrics, the decisions' explanations). With a Groot2 server to attach to
+ * ({@code --groot}, {@code --monitor-groot}), {@code MonitorDebugger} is that server's Groot2 client
+ * ({@link org.miron.runtime.groot.GrootConnection}) and {@code DebugRoutes} the page's requests to it;
+ * {@code GrootTreeMap} places the server's uids on the page's node ids; {@code DebugPanel} is the
+ * page's debugging section (docs/diagrams.md, "Debugging on the live page").
+ *
+ * <p>Why a Groot2 client and not the executor's hooks in the same process: one mechanism for
+ * Groot2, the page and the tests, and the page debugs BehaviorTree.CPP's runner as it debugs ours.
  *
  * <p>Why the bus and not the executor in the same process: the page then shows any executor that
  * publishes {@code miron.bt.status} (docs/wire-formats.md), goes on when one stops and another

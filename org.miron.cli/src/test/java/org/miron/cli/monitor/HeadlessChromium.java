@@ -94,15 +94,29 @@ final class HeadlessChromium implements AutoCloseable {
 
     /** The value of a JavaScript expression in the page (JSON-serialisable), or null on an exception. */
     JsonNode evaluate(String expression) throws Exception {
+        JsonNode result = call("Runtime.evaluate", Json.MAPPER.createObjectNode().put("expression", expression)
+                .put("returnByValue", true));
+        return result.has("exceptionDetails") ? null : result.path("result").path("value");
+    }
+
+    /** Saves what the page shows, as PNG, into {@code file} (for the docs). */
+    void screenshot(Path file) throws Exception {
+        call("Emulation.setDeviceMetricsOverride", Json.MAPPER.createObjectNode().put("width", 1400).put("height", 820)
+                .put("deviceScaleFactor", 1).put("mobile", false));
+        JsonNode shot = call("Page.captureScreenshot", Json.MAPPER.createObjectNode().put("format", "png")
+                .put("captureBeyondViewport", true));
+        Files.createDirectories(file.toAbsolutePath().getParent());
+        Files.write(file, java.util.Base64.getDecoder().decode(shot.path("data").asText()));
+    }
+
+    /** One DevTools command on the page; its result. */
+    private JsonNode call(String method, JsonNode params) throws Exception {
         int id = ids.incrementAndGet();
         CompletableFuture<JsonNode> reply = new CompletableFuture<>();
         pending.put(id, reply);
-        String message = Json.MAPPER.createObjectNode().put("id", id).put("method", "Runtime.evaluate")
-                .set("params", Json.MAPPER.createObjectNode().put("expression", expression).put("returnByValue", true))
-                .toString();
+        String message = Json.MAPPER.createObjectNode().put("id", id).put("method", method).set("params", params).toString();
         page.sendText(message, true).get(30, TimeUnit.SECONDS);
-        JsonNode result = reply.get(30, TimeUnit.SECONDS).path("result");
-        return result.has("exceptionDetails") ? null : result.path("result").path("value");
+        return reply.get(30, TimeUnit.SECONDS).path("result");
     }
 
     private final class Listener implements WebSocket.Listener {

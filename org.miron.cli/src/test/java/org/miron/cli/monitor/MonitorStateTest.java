@@ -10,7 +10,7 @@ import java.util.List;
 import org.junit.Test;
 import org.miron.runtime.bus.Topics;
 
-/** The live page's state follows miron.requirement: the latest events, each handed to the pages. */
+/** The live page's state follows miron.requirement (the latest events) and miron.decision's explanations, each handed to the pages. */
 public class MonitorStateTest {
     private static byte[] bytes(String s) {
         return s.getBytes(StandardCharsets.UTF_8);
@@ -36,5 +36,20 @@ public class MonitorStateTest {
         long told = sent.stream().filter(e -> e.name().equals("requirement")).count();
         assertEquals(MonitorState.REQUIREMENT_EVENTS + 5, told);
         assertTrue(sent.get(sent.size() - 1).data().contains("\"name\":\"r24\""));
+    }
+
+    @Test
+    public void aDecisionsExplanationIsKeptPerVarpointAndBroadcast() {
+        MonitorState state = new MonitorState(LiveMonitor.plainNames());
+        List<MonitorState.Event> sent = new ArrayList<>();
+        state.subscribe(sent::add);
+        state.onBus(Topics.DECISION, bytes("{\"seq\":7,\"decisions\":{\"task\":\"dock\",\"speed\":0.5},\"changed\":[\"task\"],"
+                + "\"why\":{\"task\":{\"because\":\"rule noBattery (BatteryLevel < 20)\",\"rules\":[\"noBattery\"]}}}"));
+        JsonNode task = state.snapshot().path("explanations").path("task");
+        assertEquals("dock", task.path("value").asText());
+        assertEquals("rule noBattery (BatteryLevel < 20)", task.path("because").asText());
+        assertEquals(7, task.path("seq").asInt());
+        assertTrue("only changed varpoints are explained", state.snapshot().path("explanations").path("speed").isMissingNode());
+        assertTrue(sent.stream().anyMatch(e -> e.name().equals("explanation") && e.data().contains("noBattery")));
     }
 }

@@ -4,7 +4,8 @@
  * ({@link GrootProtocol}), the uid numbering and the tree as XML ({@link GrootTree},
  * {@link GrootTreeXml}), the status snapshot and recorded transitions ({@link StatusSnapshot}), the
  * subtrees' blackboards ({@link BlackboardDump}, {@link MsgPack}), breakpoints and replacements
- * ({@link GrootHooks}) and the sockets ({@link GrootServer}). What differs from the library and
- * why: docs/bt-semantics.md, "Groot2".
+ * ({@link GrootHooks}) and the sockets ({@link GrootServer}); and the client side,
+ * {@link GrootConnection}, with which the live page debugs a tree through any such server, ours or
+ * BT.CPP's. What differs from the library and why: docs/bt-semantics.md, "Groot2".
  */
 package org.miron.runtime.groot;

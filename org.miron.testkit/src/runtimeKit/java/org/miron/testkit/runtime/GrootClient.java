@@ -9,39 +9,27 @@ import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.miron.runtime.FreePorts;
-import org.zeromq.SocketType;
-import org.zeromq.ZContext;
-import org.zeromq.ZMQ;
-import org.zeromq.ZMsg;
+import org.miron.runtime.groot.GrootConnection;
 
 /**
- * A Groot2 client for tests, as Groot2 talks to a Groot2Publisher (BT.CPP's or ours): a REQ on
- * 127.0.0.1:port for requests, a SUB on port + 1 for BREAKPOINT_REACHED. A request not answered in
- * time returns null and the REQ socket is made again, so the next request can be sent.
+ * A Groot2 client for tests, as Groot2 talks to a Groot2Publisher (BT.CPP's or ours): the
+ * runtime's {@link GrootConnection} (a REQ on 127.0.0.1:port, a SUB on port + 1), with the raw
+ * requests and replies a test sends and reads, and the notices queued until it asks. A request not
+ * answered in time returns null and the REQ socket is made again, so the next request can be sent.
  */
 public final class GrootClient implements AutoCloseable {
     private static final AtomicInteger IDS = new AtomicInteger(0x1000);
 
-    private final ZContext zmq = new ZContext();
-    private final int port;
-    private final ZMQ.Socket notices;
-    private final ZMQ.Socket noticeEvents;
-    private ZMQ.Socket requests;
-    private int timeoutMs = 5000;
+    private final BlockingQueue<List<byte[]>> notices = new LinkedBlockingQueue<>();
+    private final GrootConnection connection;
 
     public GrootClient(int port) {
-        this.port = port;
-        notices = zmq.createSocket(SocketType.SUB);
-        notices.setLinger(0);
-        notices.subscribe(new byte[0]);
-        String monitor = "inproc://groot-client-" + IDS.incrementAndGet();
-        notices.monitor(monitor, ZMQ.EVENT_HANDSHAKE_PROTOCOL);
-        noticeEvents = zmq.createSocket(SocketType.PAIR);
-        noticeEvents.connect(monitor);
-        notices.connect("tcp://127.0.0.1:" + (port + 1));
-        requests = newRequestSocket();
+        connection = new GrootConnection("127.0.0.1", port, 5000, notices::add);
     }
 
     /**
@@ -49,8 +37,7 @@ public final class GrootClient implements AutoCloseable {
      * what it sends before a subscriber is there, so a test that expects a notice waits for this first.
      */
     public boolean awaitSubscriber(int withinMs) {
-        noticeEvents.setReceiveTimeOut(withinMs);
-        return ZMQ.Event.recv(noticeEvents) != null;
+        return connection.awaitSubscriber(withinMs);
     }
 
     /** A port P with P + 1 free too (both are bound by a publisher), below the ephemeral range. */
@@ -68,17 +55,8 @@ public final class GrootClient implements AutoCloseable {
     }
 
     public GrootClient timeoutMs(int ms) {
-        timeoutMs = ms;
-        requests.setReceiveTimeOut(ms);
+        connection.timeoutMs(ms);
         return this;
-    }
-
-    private ZMQ.Socket newRequestSocket() {
-        ZMQ.Socket socket = zmq.createSocket(SocketType.REQ);
-        socket.setLinger(0);
-        socket.setReceiveTimeOut(timeoutMs);
-        socket.connect("tcp://127.0.0.1:" + port);
-        return socket;
     }
 
     /** A request header: protocol 2, the type, a fresh unique id (little-endian). */
@@ -98,21 +76,11 @@ public final class GrootClient implements AutoCloseable {
 
     /** Sends these parts as they are; the reply's parts, or null when none came in time. */
     public List<byte[]> raw(List<byte[]> parts) {
-        ZMsg message = new ZMsg();
-        parts.forEach(message::add);
-        if (!message.send(requests, true)) {
-            reset();
+        try {
+            return connection.raw(parts);
+        } catch (GrootConnection.GrootException closed) {
             return null;
         }
-        ZMsg reply = ZMsg.recvMsg(requests);
-        if (reply == null) {
-            reset();
-            return null;
-        }
-        List<byte[]> out = new ArrayList<>();
-        reply.forEach(frame -> out.add(frame.getData()));
-        reply.destroy();
-        return out;
     }
 
     /** Asks until answered (a publisher starting up may miss the first requests). */
@@ -125,22 +93,14 @@ public final class GrootClient implements AutoCloseable {
         return reply;
     }
 
-    private void reset() {
-        zmq.destroySocket(requests);
-        requests = newRequestSocket();
-    }
-
     /** The next notice on the PUB (header, uid), or null after timeoutMs. */
     public List<byte[]> awaitNotice(int timeoutMs) {
-        notices.setReceiveTimeOut(timeoutMs);
-        ZMsg notice = ZMsg.recvMsg(notices);
-        if (notice == null) {
+        try {
+            return notices.poll(timeoutMs, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
             return null;
         }
-        List<byte[]> out = new ArrayList<>();
-        notice.forEach(frame -> out.add(frame.getData()));
-        notice.destroy();
-        return out;
     }
 
     /** Forgets the notices received so far. */
@@ -156,6 +116,6 @@ public final class GrootClient implements AutoCloseable {
 
     @Override
     public void close() {
-        zmq.close();
+        connection.close();
     }
 }
