@@ -25,12 +25,14 @@ public final class RecordedTree {
     public record RecordedNode(int uid, String element, String name, String path) {
     }
 
+    private final Element document;
     private final String mainTreeId;
     private final Map<Integer, RecordedNode> byUid = new LinkedHashMap<>();
     private final Map<Integer, Element> rootsByUid = new HashMap<>();
     private final Map<Integer, String> treeIdByRootUid = new HashMap<>();
 
     private RecordedTree(Element root) throws BtlogFormatException {
+        document = root;
         List<Element> trees = childElements(root, "BehaviorTree");
         if (trees.isEmpty() || childElements(trees.get(0), null).isEmpty()) {
             throw new BtlogFormatException("the recording's tree has no <BehaviorTree> with a node");
@@ -92,6 +94,50 @@ public final class RecordedTree {
             }
         }
         return out;
+    }
+
+    /**
+     * The recorded tree as a BehaviorTree.CPP 4 file a loader reads (to draw it): each subtree
+     * instance a tree of its own, {@code ID_<uid of its root>}, which its SubTree call calls; the
+     * recording's {@code _uid} and {@code _fullpath} attributes left out.
+     */
+    public String loadableXml() {
+        try {
+            Element root = (Element) document.cloneNode(true);
+            Map<Integer, String> instanceIds = new HashMap<>();
+            List<Element> trees = childElements(root, "BehaviorTree");
+            for (int i = 0; i < trees.size(); i++) {
+                Element tree = trees.get(i);
+                List<Element> nodes = childElements(tree, null);
+                if (i > 0 && !nodes.isEmpty()) {
+                    int rootUid = uid(nodes.get(0));
+                    String id = tree.getAttribute("ID") + "_" + rootUid;
+                    instanceIds.put(rootUid, id);
+                    tree.setAttribute("ID", id);
+                }
+                tree.removeAttribute("_fullpath");
+            }
+            NodeList all = root.getElementsByTagName("*");
+            for (int i = 0; i < all.getLength(); i++) {
+                Element e = (Element) all.item(i);
+                if (e.hasAttribute("_uid")) {
+                    int uid = uid(e);
+                    if (e.getTagName().equals("SubTree") && instanceIds.containsKey(uid + 1)) {
+                        e.setAttribute("ID", instanceIds.get(uid + 1));
+                    }
+                    e.removeAttribute("_uid");
+                    e.removeAttribute("_fullpath");
+                }
+            }
+            root.setAttribute("main_tree_to_execute", mainTreeId);
+            javax.xml.transform.Transformer out = javax.xml.transform.TransformerFactory.newInstance().newTransformer();
+            out.setOutputProperty(javax.xml.transform.OutputKeys.INDENT, "yes");
+            java.io.StringWriter text = new java.io.StringWriter();
+            out.transform(new javax.xml.transform.dom.DOMSource(root), new javax.xml.transform.stream.StreamResult(text));
+            return text.toString();
+        } catch (BtlogFormatException | javax.xml.transform.TransformerException e) {
+            throw new IllegalStateException("the recorded tree was read, it can be written: " + e.getMessage(), e);
+        }
     }
 
     /** The ID of the tree the recording ran (its first {@code <BehaviorTree>}). */
