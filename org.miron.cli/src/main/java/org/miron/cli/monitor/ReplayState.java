@@ -86,12 +86,16 @@ public final class ReplayState {
         return snapshot;
     }
 
-    /** The adaptations, the slider's marks: [{"at": ms, "seq", "changed": {vp: value}}], in time order. */
+    /**
+     * The adaptations, the slider's marks: [{"at": ms, "seq", "changed": {vp: value}}], in time
+     * order, each at the first millisecond whose snapshot has it.
+     */
     public ArrayNode marks() {
         ArrayNode marks = Json.MAPPER.createArrayNode();
         for (Step step : steps) {
             if (step.topic().equals(Topics.DECISION) && step.message().path("changed").size() > 0) {
-                ObjectNode mark = marks.addObject().put("at", step.micros() / 1000).put("seq", step.message().path("seq").asLong());
+                // the first millisecond that shows it: a seek to the mark shows the decision
+                ObjectNode mark = marks.addObject().put("at", (step.micros() + 999) / 1000).put("seq", step.message().path("seq").asLong());
                 ObjectNode changed = mark.putObject("changed");
                 step.message().path("changed").forEach(vp -> changed.set(vp.asText(), step.message().path("decisions").path(vp.asText())));
             }

@@ -4,7 +4,10 @@
  * (org.miron.diagram's run-time view) and starts {@link org.miron.cli.monitor.MonitorServer}, the
  * JDK's HTTP server on 127.0.0.1 serving {@link org.miron.cli.monitor.MonitorPage} and server-sent
  * events; {@code MonitorState} keeps what the page shows from the bus (node statuses, varpoint
- * values, metrics).
+ * values, metrics). {@code miron replay --monitor} serves the same page over a recording:
+ * {@link org.miron.cli.monitor.ReplayMonitor} draws the recorded tree, {@link org.miron.cli.monitor.ReplayState}
+ * tells a fresh MonitorState what was recorded up to an instant, {@link org.miron.cli.monitor.ReplayServer}
+ * and {@link org.miron.cli.monitor.ReplayPage} add the time slider.
  *
  * <p>Why the bus and not the executor in the same process: the page then shows any executor that
  * publishes {@code miron.bt.status} (docs/wire-formats.md), goes on when one stops and another

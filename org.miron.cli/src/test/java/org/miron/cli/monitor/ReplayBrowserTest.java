@@ -62,7 +62,7 @@ public class ReplayBrowserTest {
                 && e.message().path("decisions").path("preparation").asText().equals("charge")
                 && e.message().path("changed").toString().contains("preparation")).findFirst()
                 .orElseThrow(() -> new AssertionError("no decision to charge first in the bus log: " + out));
-        long chargeAt = (charge.timeUs() - recording.startMicros()) / 1000;
+        long chargeAt = (charge.timeUs() - recording.startMicros() + 999) / 1000; // the first millisecond after it
         long before = Math.max(0, chargeAt - 1500);
 
         ReplayState replay = new ReplayState(recording, tree, bus, ReplayMonitor.plainNames());
@@ -81,6 +81,7 @@ public class ReplayBrowserTest {
                         "Array.from(document.querySelectorAll('#tree g.status-running')).map(g=>g.dataset.id).sort().join(',')",
                         v -> v.equals(running));
                 long seq = lastDecisionSeq(bus, recording.startMicros(), at);
+                assertTrue(at != chargeAt || seq >= charge.message().path("seq").asLong());
                 await(browser, "decision #" + seq + " at " + at + " ms", "document.getElementById('replay-decision').dataset.seq||''",
                         v -> v.equals(seq < 0 ? "" : Long.toString(seq)));
                 String preparation = preparationAt(bus, recording.startMicros(), at);
