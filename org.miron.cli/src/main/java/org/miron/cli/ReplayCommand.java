@@ -27,7 +27,8 @@ import picocli.CommandLine.Spec;
                 + "execute, demo or miron-btcpp-run; the bus beside it in FILE.bus.jsonl): prints what it holds; with "
                 + "--monitor serves the live page over it with a time slider (docs/diagrams.md, \"Recording and replay\").",
         exitCodeListHeading = ExitCodes.HEADING,
-        exitCodeList = { "0:replayed", "2:not a recording, or the port cannot be served" })
+        exitCodeList = { "0:replayed (without --monitor)", "2:not a recording, or the port cannot be served",
+                ExitCodes.SIGTERM + " (--monitor)", ExitCodes.SIGINT + " (--monitor)" })
 public final class ReplayCommand implements Callable<Integer> {
     @Parameters(paramLabel = "FILE.btlog", description = "the recording")
     Path file;
