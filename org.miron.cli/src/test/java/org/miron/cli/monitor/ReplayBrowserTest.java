@@ -52,7 +52,7 @@ public class ReplayBrowserTest {
         cli.setOut(new PrintWriter(out, true));
         cli.setErr(new PrintWriter(out, true));
         int status = cli.execute("demo", "--model", RepositoryRoot.resolve("examples/hospital-delivery/hospital.miron").toString(),
-                "--out", temp.newFolder("demo").getPath(), "--time-scale", "0.3", "--record", btlog.toString());
+                "--out", temp.newFolder("demo").getPath(), "--time-scale", "0.5", "--record", btlog.toString());
         assertEquals(out.toString(), 0, status);
 
         Recording recording = BtlogReader.read(btlog);
