@@ -3,17 +3,16 @@ package org.miron.tests.btcpp;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.NullNode;
 import java.io.ByteArrayInputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.concurrent.TimeUnit;
 import javax.xml.parsers.DocumentBuilderFactory;
 import org.junit.BeforeClass;
 import org.junit.ClassRule;
@@ -67,9 +66,17 @@ public class RecordingOracleTest {
                     "{\"varpoint\":\"task\",\"value\":\"deliver\",\"seq\":1,\"time\":" + System.currentTimeMillis() + "}");
             NodeStatus javaResult;
             try (BtcppRunner runner = new BtcppRunner(List.of(tree.toString(), "--bus", endpoints.busOut(), "--skill-requests",
-                    endpoints.request(), "--skill-results", endpoints.skillEvents(), "--period", "20", "--record", libraryLog.toString()));
+                    endpoints.request(), "--skill-results", endpoints.skillEvents(), "--period", "20", "--decision-wait", "60000",
+                    "--record", libraryLog.toString()));
                     LiveExecutor java = new LiveExecutor(endpoints).build(tree, null).record(ourLog)) {
+                // both start on the decision (a first tick without it would take the Switch's default branch)
+                long end = System.currentTimeMillis() + 60_000;
+                while (!java.variants().snapshot().containsKey("task") && System.currentTimeMillis() < end) {
+                    Thread.sleep(10);
+                }
                 javaResult = java.run(Duration.ofMillis(20));
+                JsonNode start = runner.await("start", l -> l.path("event").asText().equals("start"), 60_000);
+                assertTrue("the runner started on the decision: " + start, start.path("decisions").asBoolean());
                 runner.await("the mission's end", l -> l.path("event").asText().equals("mission"), 60_000);
                 runner.await("stop", l -> l.path("event").asText().equals("stop"), 30_000);
             }
