@@ -8,6 +8,7 @@
 #include "scripted.hpp"
 
 #include <behaviortree_cpp/loggers/abstract_logger.h>
+#include <behaviortree_cpp/loggers/bt_file_logger_v2.h>
 #include <behaviortree_cpp/loggers/groot2_publisher.h>
 #include <behaviortree_cpp/contrib/json.hpp>  // the nlohmann::json BehaviorTree.CPP ships (one copy: no ODR clash)
 
@@ -46,6 +47,7 @@ const char* USAGE =
     "  --decision-wait MS         the first tick waits this long for every varpoint's decision (default 2000)\n"
     "  --repeat                   start the mission again when it ends (until SIGTERM)\n"
     "  --groot PORT               attach BehaviorTree.CPP's Groot2 publisher on PORT (and PORT+1)\n"
+    "  --record FILE.btlog        record the run with BehaviorTree.CPP's FileLogger2 (what Groot2 opens)\n"
     "  --plugin PATH              the plugin to load (default: libmiron_btcpp.so next to this program)\n"
     "  --trace                    print every status change as a JSON line\n"
     "  --script SCENARIO.json     scripted run: scripted action results, decisions by tick, no sockets\n";
@@ -92,7 +94,7 @@ int usage(const std::string& message)
 int main(int argc, char** argv)
 {
   miron::btcpp::Endpoints endpoints = miron::btcpp::Endpoints::fromEnvironment();
-  std::string tree_file, script, plugin = defaultPlugin(argv[0]);
+  std::string tree_file, script, record, plugin = defaultPlugin(argv[0]);
   long period = 50, decision_wait = 2000;
   int groot = 0;
   bool repeat = false, trace = false;
@@ -121,6 +123,7 @@ int main(int argc, char** argv)
       else if(arg == "--decision-wait") decision_wait = std::stol(value());
       else if(arg == "--groot") groot = std::stoi(value());
       else if(arg == "--plugin") plugin = value();
+      else if(arg == "--record") record = value();
       else if(arg == "--script") script = value();
       else if(arg == "--repeat") repeat = true;
       else if(arg == "--trace") trace = true;
@@ -132,6 +135,10 @@ int main(int argc, char** argv)
     {
       return usage(std::string("bad value for ") + arg + ": " + e.what());
     }
+  }
+  if(!script.empty() && !record.empty())
+  {
+    return usage("--record records a live run, not a --script one");
   }
   if(!script.empty())
   {
@@ -172,6 +179,20 @@ int main(int argc, char** argv)
     std::cerr << tree_file << ": error: " << e.what() << std::endl;
     return 1;
   }
+  // FileLogger2 before anything ticks: the recording's clock starts with its header
+  std::unique_ptr<BT::FileLogger2> recorder;
+  if(!record.empty())
+  {
+    try
+    {
+      recorder = std::make_unique<BT::FileLogger2>(tree, record);
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << "miron-btcpp-run: error: cannot record into " << record << ": " << e.what() << std::endl;
+      return 2;
+    }
+  }
   JsonTrace json_trace(tree.rootNode(), trace);
   std::unique_ptr<BT::Groot2Publisher> groot_publisher;
   if(groot > 0)
@@ -184,7 +205,7 @@ int main(int argc, char** argv)
   // behaviour for the few milliseconds they take to arrive (the Java executor waits the same way)
   bool decided = miron::btcpp::awaitDecisions(varpoints, std::chrono::milliseconds(decision_wait));
   say({ { "event", "start" }, { "tree", tree_file }, { "varpoints", varpoints }, { "skills", skills },
-        { "decisions", decided }, { "groot", groot }, { "pid", getpid() } });
+        { "decisions", decided }, { "groot", groot }, { "record", record }, { "pid", getpid() } });
 
   while(!stop_requested)
   {

@@ -125,6 +125,11 @@ public class DemoCommand implements Callable<Integer> {
                     + "blackboards); default: --groot's PORT")
     Integer monitorGrootPort;
 
+    @Option(names = "--record", paramLabel = "FILE.btlog",
+            description = "record the run (either executor) as BehaviorTree.CPP's FileLogger2 does, what Groot2 and "
+                    + "`miron replay` open, and the bus beside it in FILE.bus.jsonl (docs/diagrams.md, \"Recording and replay\")")
+    Path record;
+
     @Option(names = "--verbose", description = "also show the components' own logs")
     boolean verbose;
 
@@ -161,6 +166,13 @@ public class DemoCommand implements Callable<Integer> {
         }
         if (worldFile != null && noProvider) {
             return usage("--no-provider plays a scenario's scripted estimates: give --scenario too (a world publishes only contexts)");
+        }
+        if (record != null) {
+            try {
+                org.miron.runtime.recording.Btlog.checkExtension(record);
+            } catch (IllegalArgumentException e) {
+                return usage("miron demo: error: " + e.getMessage());
+            }
         }
         if (btFormat != null && btFormat != 3 && btFormat != 4) {
             return usage("--bt-format must be 3 or 4, not " + btFormat);
@@ -262,7 +274,7 @@ public class DemoCommand implements Callable<Integer> {
                     out, endpoints, console).timeScale(timeScale).backend(backend).btcpp(btcppRunner)
                     .world(liveWorld, worldMs).requirements(requirements)
                     .provider(roqme, period).names(ModelNames.of(modelFile.toFile())).monitor(monitorPort).groot(grootPort)
-                    .monitorGroot(monitorGrootPort != null ? monitorGrootPort : grootPort).run();
+                    .monitorGroot(monitorGrootPort != null ? monitorGrootPort : grootPort).record(record).run();
         } catch (EngineStartException e) {
             return usage("miron demo: error: " + e.getMessage());
         } catch (Demo.GrootBindException e) {

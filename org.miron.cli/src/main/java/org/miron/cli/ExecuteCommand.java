@@ -16,6 +16,8 @@ import org.miron.executor.NodeStatus;
 import org.miron.executor.trace.ConsoleTracePrinter;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.live.LiveExecutor;
+import org.miron.runtime.recording.Btlog;
+import org.miron.runtime.recording.BusLog;
 import org.miron.runtime.skill.SkillDeadlines;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -74,12 +76,24 @@ public final class ExecuteCommand implements Callable<Integer> {
             description = "the Groot2 server on 127.0.0.1 the live page debugs through (breakpoints, forced results, "
                     + "blackboards): another executor's, e.g. miron-btcpp-run --groot PORT; default: --groot's PORT")
     Integer monitorGrootPort;
+    @Option(names = "--record", paramLabel = "FILE.btlog",
+            description = "record the run as BehaviorTree.CPP's FileLogger2 does (what Groot2 and `miron replay` open), "
+                    + "and the bus beside it in FILE.bus.jsonl (docs/diagrams.md, \"Recording and replay\")")
+    Path record;
 
     @Override
     public Integer call() {
         if (!Files.isRegularFile(treeFile)) {
             System.err.println(treeFile + ": error: no such file");
             return 2;
+        }
+        if (record != null) {
+            try {
+                Btlog.checkExtension(record);
+            } catch (IllegalArgumentException e) {
+                System.err.println("miron execute: error: " + e.getMessage());
+                return 2;
+            }
         }
         Endpoints endpoints = new Endpoints(request.endpoint, Endpoints.DEFAULT_SKILL, skillEvents, busIn.endpoint, busOut.endpoint);
         MonitorServer monitor = null;
@@ -102,7 +116,16 @@ public final class ExecuteCommand implements Callable<Integer> {
                 System.out.println("live monitor: debugs through Groot2 on 127.0.0.1:" + debugPort);
             }
         }
-        try (MonitorServer page = monitor; LiveExecutor executor = new LiveExecutor(endpoints)) {
+        BusLog busLog = null;
+        if (record != null) {
+            try {
+                busLog = BusLog.start(Btlog.busLogOf(record), endpoints.busIn(), endpoints.busOut());
+            } catch (IOException e) {
+                System.err.println("miron execute: error: cannot record into " + Btlog.busLogOf(record) + ": " + e.getMessage());
+                return 2;
+            }
+        }
+        try (BusLog bus = busLog; MonitorServer page = monitor; LiveExecutor executor = new LiveExecutor(endpoints)) {
             try {
                 executor.skillDeadlines(new SkillDeadlines(skillDeadlines));
             } catch (IllegalArgumentException e) {
@@ -114,6 +137,15 @@ public final class ExecuteCommand implements Callable<Integer> {
             } catch (BtBuildException e) {
                 System.err.println("miron execute: error: " + e.getMessage());
                 return 2;
+            }
+            if (record != null) {
+                try {
+                    executor.record(record);
+                } catch (IOException e) {
+                    System.err.println("miron execute: error: cannot record into " + record + ": " + e.getMessage());
+                    return 2;
+                }
+                System.out.println("recording: " + record + " (bus: " + Btlog.busLogOf(record) + ")");
             }
             if (grootPort != null) {
                 try {

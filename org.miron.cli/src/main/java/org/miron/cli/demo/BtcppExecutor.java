@@ -33,6 +33,12 @@ final class BtcppExecutor implements AutoCloseable {
         return this;
     }
 
+    /** Records the run with BehaviorTree.CPP's FileLogger2 into this .btlog; before {@link #start}. */
+    BtcppExecutor record(Path btlog) {
+        command.addAll(List.of("--record", btlog.toAbsolutePath().toString()));
+        return this;
+    }
+
     BtcppExecutor(Path runner, Path tree, Endpoints endpoints, Narrator narrator, BusRecorder clock) {
         command.addAll(List.of(runner.toString(), tree.toString(), "--bus", endpoints.busOut(), "--skill-requests",
                 endpoints.request(), "--skill-results", endpoints.skillEvents(), "--period", "50", "--repeat"));

@@ -21,6 +21,8 @@ import org.miron.runtime.player.Scenario;
 import org.miron.runtime.requirement.RequirementModel;
 import org.miron.runtime.requirement.RequirementResult;
 import org.miron.runtime.player.ScenarioPlayer;
+import org.miron.runtime.recording.Btlog;
+import org.miron.runtime.recording.BusLog;
 import org.miron.runtime.roqme.LiveProvider;
 import org.miron.runtime.roqme.expr.CompiledModel;
 import org.miron.runtime.skill.SkillInterfaceMock;
@@ -61,6 +63,7 @@ public final class Demo {
     private Integer grootPort;
     private Integer monitorGrootPort;
     private Path btcppRunner;
+    private Path record;
     private LiveWorld world;
     private long worldMs;
     private RequirementModel requirements;
@@ -142,6 +145,15 @@ public final class Demo {
         return this;
     }
 
+    /**
+     * Records the run into this .btlog (FileLogger2's format, written by either executor) and the
+     * bus beside it ({@link Btlog#busLogOf}); null: no recording.
+     */
+    public Demo record(Path btlog) {
+        this.record = btlog;
+        return this;
+    }
+
     /** Serves the live monitor page on 127.0.0.1:port while the demo runs (null: none). */
     public Demo monitor(Integer port) {
         this.monitorPort = port;
@@ -178,7 +190,8 @@ public final class Demo {
                 }
             }
             Narrator narrator = new Narrator(out, engine.model());
-            try (BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
+            try (BusLog busLog = record == null ? null : BusLog.start(Btlog.busLogOf(record), endpoints.busIn(), endpoints.busOut());
+                    BusRecorder recorder = new BusRecorder(endpoints.busIn(), endpoints.busOut(), narrator::onBusEvent)
                     .start();
                     ScenarioPlayer player = world != null ? null : new ScenarioPlayer(scenario, timeScale, endpoints.busIn())) {
                 narrator.setClock(recorder);
@@ -223,10 +236,14 @@ public final class Demo {
     }
 
     private int runOnJava(Engine engine, LiveProvider provider, Narrator narrator, BusRecorder recorder,
-            ScenarioPlayer player) throws InterruptedException, EngineStartException {
+            ScenarioPlayer player) throws InterruptedException, EngineStartException, java.io.IOException {
         AtomicInteger missions = new AtomicInteger();
         AtomicBoolean scenarioOver = new AtomicBoolean();
         try (LiveExecutor executor = new LiveExecutor(endpoints).build(tree, narrator)) {
+            if (record != null) {
+                executor.record(record);
+                out.println("MIRoN demo: recording the tree into " + record + ", the bus into " + Btlog.busLogOf(record));
+            }
             if (grootPort != null) {
                 try {
                     executor.serveGroot(grootPort);
@@ -262,6 +279,10 @@ public final class Demo {
     private int runOnBtcpp(Engine engine, LiveProvider provider, Narrator narrator, BusRecorder recorder,
             ScenarioPlayer player) throws InterruptedException, java.io.IOException, EngineStartException {
         try (BtcppExecutor executor = new BtcppExecutor(btcppRunner, tree, endpoints, narrator, recorder)) {
+            if (record != null) {
+                executor.record(record); // BehaviorTree.CPP's own FileLogger2
+                out.println("MIRoN demo: recording the tree into " + record + " (FileLogger2), the bus into " + Btlog.busLogOf(record));
+            }
             if (grootPort != null) {
                 executor.groot(grootPort); // BehaviorTree.CPP's own Groot2Publisher
                 out.println("MIRoN demo: Groot2 can connect to 127.0.0.1:" + grootPort + " (and " + (grootPort + 1) + ")");

@@ -13,6 +13,11 @@
  * <p>Why a Groot2 client and not the executor's hooks in the same process: one mechanism for
  * Groot2, the page and the tests, and the page debugs BehaviorTree.CPP's runner as it debugs ours.
  *
+ * <p>{@code miron replay --monitor} serves the same page over a recording:
+ * {@link org.miron.cli.monitor.ReplayMonitor} draws the recorded tree, {@link org.miron.cli.monitor.ReplayState}
+ * tells a fresh MonitorState what was recorded up to an instant, {@link org.miron.cli.monitor.ReplayServer}
+ * and {@link org.miron.cli.monitor.ReplayPage} add the time slider.
+ *
  * <p>Why the bus and not the executor in the same process: the page then shows any executor that
  * publishes {@code miron.bt.status} (docs/wire-formats.md), goes on when one stops and another
  * starts, and an editor's diagram could follow the same messages. Why server-sent events: one

@@ -44,7 +44,8 @@ public class SwitchNode extends ControlNode {
         if (runningChild != -1 && runningChild != match) {
             haltChild(runningChild);
         }
-        setStatus(NodeStatus.RUNNING);
+        // no RUNNING before the child's tick, unlike Sequence: BT.CPP's Switch (3 and 4) sets none, so
+        // a recording shows the Switch RUNNING only after its running child (RecordingOracleTest)
         NodeStatus result = tickChild(match);
         if (result == NodeStatus.SKIPPED) {
             runningChild = -1;

@@ -20,7 +20,7 @@ import org.miron.executor.decorators.SubTreeNode;
  * pre/post-conditions; then a {@code <TreeNodesModel>} of the node types the tree uses. Printed as
  * tinyxml2 prints: four spaces a level, empty elements closed with {@code />}.
  */
-final class GrootTreeXml {
+public final class GrootTreeXml {
     /** BT.CPP's PreCond then PostCond names, in the order of its enums (its maps are ordered by them). */
     private static final List<String> CONDITIONS = List.of("_failureIf", "_successIf", "_skipIf", "_while",
             "_onHalted", "_onFailure", "_onSuccess", "_post");
@@ -38,6 +38,14 @@ final class GrootTreeXml {
 
     static String write(GrootTree tree, DeclaredModels declared) {
         return new GrootTreeXml(tree, declared).document();
+    }
+
+    /**
+     * The tree as FULLTREE sends it and FileLogger2 writes it in a recording's header, the
+     * application's node models as {@code treeFile} declares them (null: none).
+     */
+    public static String write(GrootTree tree, java.nio.file.Path treeFile) {
+        return write(tree, treeFile == null ? DeclaredModels.none() : DeclaredModels.of(treeFile));
     }
 
     private String document() {

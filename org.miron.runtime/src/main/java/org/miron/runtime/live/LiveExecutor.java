@@ -16,6 +16,7 @@ import org.miron.executor.trace.StatusListener;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.groot.GrootServer;
+import org.miron.runtime.recording.BtlogWriter;
 import org.miron.runtime.skill.SkillDeadlines;
 import org.miron.runtime.skill.ZmqSkillClient;
 
@@ -35,6 +36,7 @@ public final class LiveExecutor implements AutoCloseable {
     private DecisionFeed feed;
     private Tree tree;
     private GrootServer groot;
+    private BtlogWriter recording;
     private Path treeFile;
 
     public LiveExecutor(Endpoints endpoints) {
@@ -80,6 +82,18 @@ public final class LiveExecutor implements AutoCloseable {
             throw new IllegalStateException("build the tree before serving Groot2");
         }
         groot = GrootServer.start(tree, port, treeFile);
+        return this;
+    }
+
+    /**
+     * Records the run into {@code btlog} as BehaviorTree.CPP's FileLogger2 does
+     * (org.miron.runtime.recording); call it after {@link #build}, before running.
+     */
+    public LiveExecutor record(Path btlog) throws java.io.IOException {
+        if (tree == null) {
+            throw new IllegalStateException("build the tree before recording it");
+        }
+        recording = BtlogWriter.start(tree, btlog, treeFile);
         return this;
     }
 
@@ -143,6 +157,9 @@ public final class LiveExecutor implements AutoCloseable {
     @Override
     public void close() {
         stop();
+        if (recording != null) {
+            recording.close(); // after the stop: the halt's transitions to IDLE are recorded
+        }
         if (feed != null) {
             feed.close();
         }

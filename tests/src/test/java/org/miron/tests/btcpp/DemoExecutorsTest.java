@@ -53,11 +53,13 @@ public class DemoExecutorsTest {
         private final String told;
         private final List<String> adaptations;
         private final List<String> pushes;
+        private final Path recording;
 
-        Run(String told, List<String> adaptations, List<String> pushes) {
+        Run(String told, List<String> adaptations, List<String> pushes, Path recording) {
             this.told = told;
             this.adaptations = adaptations;
             this.pushes = pushes;
+            this.recording = recording;
         }
 
         String told() {
@@ -78,10 +80,11 @@ public class DemoExecutorsTest {
         CompiledModel roqme = Compiler.compile(ModelReader.read(generated.resolve("intralogistics.roqme.json")),
                 new java.util.LinkedHashMap<>());
         StringWriter console = new StringWriter();
+        Path recording = temp.newFolder().toPath().resolve("run.btlog");
         Demo.Result result = new Demo(generated.resolve("intralogistics.io.json"), generated.resolve("intralogistics.ext.xml"),
                 Scenario.load(example.resolve("demo/scenario.json")), SkillTable.load(example.resolve("demo/skills.json")),
                 temp.newFolder().toPath(), Endpoints.freeLoopback(), new PrintWriter(console, true))
-                .timeScale(0.5).provider(roqme, 1000).btcpp(runner).run();
+                .timeScale(0.5).provider(roqme, 1000).btcpp(runner).record(recording).run();
         List<String> adaptations = new ArrayList<>();
         for (String line : Files.readAllLines(result.decisionLog())) {
             JsonNode decision = Json.MAPPER.readTree(line);
@@ -95,7 +98,7 @@ public class DemoExecutorsTest {
         // in-attributes by name: the two executors write them in different orders
         result.skillsPushed().forEach(s -> pushes.add(s.path("name").asText() + " "
                 + Json.MAPPER.convertValue(s.path("in-attribute"), java.util.TreeMap.class)));
-        return new Run(console.toString(), adaptations, pushes);
+        return new Run(console.toString(), adaptations, pushes, recording);
     }
 
     @Test
@@ -108,6 +111,26 @@ public class DemoExecutorsTest {
         assertEquals("the first skill", java.pushes().get(0), cpp.pushes().get(0));
         assertEquals("the distinct skills", new LinkedHashSet<>(java.pushes()).stream().sorted().toList(),
                 new LinkedHashSet<>(cpp.pushes()).stream().sorted().toList());
+        // --record on either executor: the same recorded tree, and the bus log holds the run's adaptations
+        org.miron.runtime.recording.Recording javaLog = org.miron.runtime.recording.BtlogReader.read(java.recording);
+        org.miron.runtime.recording.Recording cppLog = org.miron.runtime.recording.BtlogReader.read(cpp.recording);
+        assertEquals(org.miron.runtime.recording.RecordedTree.parse(javaLog.treeXml()).nodes(),
+                org.miron.runtime.recording.RecordedTree.parse(cppLog.treeXml()).nodes());
+        for (Run run : List.of(java, cpp)) {
+            List<String> logged = new ArrayList<>();
+            for (org.miron.runtime.recording.BusLogReader.BusEvent e : org.miron.runtime.recording.BusLogReader.read(
+                    org.miron.runtime.recording.Btlog.busLogOf(run.recording))) {
+                if (e.topic().equals("miron.decision")) {
+                    e.message().path("changed").forEach(vp -> {
+                        if (vp.asText().equals("task")) {
+                            logged.add("task -> " + e.message().path("decisions").path("task").asText());
+                        }
+                    });
+                }
+            }
+            assertEquals("the bus log's adaptations", run.adaptations(), logged);
+        }
+        assertTrue(cppLog.transitions().size() > 20 && javaLog.transitions().size() > 20);
         for (Run run : List.of(java, cpp)) {
             int dock = run.told().indexOf("ADAPT   task -> dock");
             int resume = run.told().indexOf("ADAPT   task -> pickDeliverCharge", dock);
