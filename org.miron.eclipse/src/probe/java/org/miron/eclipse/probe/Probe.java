@@ -145,7 +145,7 @@ public final class Probe {
     }
 
     /**
-     * The editor bundle's "Generate MIRoN artefacts" handler, headless: a workspace project with
+     * The "Generate MIRoN artefacts" handler (bundle org.miron.eclipse), headless: a workspace project with
      * copies of the example's files, the handler executed on the .miron file selected, its job
      * awaited; answers the files of generated/ as the workspace sees them, then the status of
      * generating a broken copy ("severity message").
@@ -163,9 +163,9 @@ public final class Probe {
         org.eclipse.core.resources.IFile model = project.getFile("intralogistics.miron");
         org.eclipse.core.expressions.EvaluationContext context = new org.eclipse.core.expressions.EvaluationContext(null, model);
         context.addVariable("selection", List.of(model));
-        new org.miron.eclipse.editor.GenerateHandler()
+        new org.miron.eclipse.builder.GenerateHandler()
                 .execute(new org.eclipse.core.commands.ExecutionEvent(null, Map.of(), null, context));
-        org.eclipse.core.runtime.jobs.Job.getJobManager().join(org.miron.eclipse.editor.GenerateHandler.FAMILY, null);
+        org.eclipse.core.runtime.jobs.Job.getJobManager().join(org.miron.eclipse.builder.GenerateHandler.FAMILY, null);
         List<String> out = new ArrayList<>();
         org.eclipse.core.resources.IFolder generated = project.getFolder("generated");
         if (generated.exists()) {
@@ -176,7 +176,7 @@ public final class Probe {
         java.util.Collections.sort(out);
         org.eclipse.core.resources.IFile broken = project.getFile("broken.miron");
         broken.create(new java.io.ByteArrayInputStream(brokenModelText.getBytes(java.nio.charset.StandardCharsets.UTF_8)), true, null);
-        org.eclipse.core.runtime.IStatus status = org.miron.eclipse.editor.GenerateHandler.generate(broken);
+        org.eclipse.core.runtime.IStatus status = org.miron.eclipse.builder.ArtefactGeneration.generate(broken);
         out.add((status.getSeverity() == org.eclipse.core.runtime.IStatus.ERROR ? "ERROR " : "NOT-ERROR ") + status.getMessage());
         return out;
     }
