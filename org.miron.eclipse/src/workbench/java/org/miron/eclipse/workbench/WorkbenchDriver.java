@@ -2,6 +2,8 @@ package org.miron.eclipse.workbench;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -22,8 +24,17 @@ import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.jobs.Job;
 import org.eclipse.jface.viewers.StructuredSelection;
+import org.eclipse.swt.SWT;
+import org.eclipse.swt.widgets.Composite;
+import org.eclipse.swt.widgets.Control;
 import org.eclipse.swt.widgets.Display;
+import org.eclipse.swt.widgets.Event;
+import org.eclipse.swt.widgets.Tree;
+import org.eclipse.swt.widgets.TreeItem;
 import org.eclipse.ui.IStartup;
+import org.eclipse.ui.IViewPart;
+import org.eclipse.ui.ide.IDE;
+import org.eclipse.ui.navigator.CommonNavigator;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.commands.ICommandService;
 import org.eclipse.ui.handlers.IHandlerService;
@@ -39,13 +50,20 @@ import org.eclipse.ui.handlers.IHandlerService;
 public final class WorkbenchDriver implements IStartup {
     private final List<String> result = new ArrayList<>();
     private final List<String> errorLog = new ArrayList<>();
+    private final List<String> platformErrors = new ArrayList<>();
 
     @Override
     public void earlyStartup() {
         Path out = Path.of(System.getProperty("miron.workbench.result"));
+        // Errors of ours (our bundle, or our code on the stack) fail the test; the platform's are told.
         ILogListener listener = (status, plugin) -> {
             if (status.getSeverity() == IStatus.ERROR) {
-                errorLog.add(status.getPlugin() + ": " + status.getMessage()
+                StringWriter trace = new StringWriter();
+                if (status.getException() != null) {
+                    status.getException().printStackTrace(new PrintWriter(trace));
+                }
+                boolean ours = status.getPlugin().startsWith("org.miron") || trace.toString().contains("org.miron");
+                (ours ? errorLog : platformErrors).add(status.getPlugin() + ": " + status.getMessage()
                         + (status.getException() == null ? "" : " " + status.getException()));
             }
         };
@@ -57,6 +75,7 @@ public final class WorkbenchDriver implements IStartup {
         } finally {
             Platform.removeLogListener(listener);
             errorLog.forEach(e -> put("errorLog", e));
+            platformErrors.forEach(e -> put("platformErrorLog", e));
             put("done", "true");
             try {
                 Files.write(out, result, StandardCharsets.UTF_8);
@@ -73,13 +92,20 @@ public final class WorkbenchDriver implements IStartup {
 
     private void run(Path input) throws Exception {
         long start = System.nanoTime();
+        for (String bundle : List.of("org.miron.eclipse", "org.miron.eclipse.editor", "org.eclipse.ui.genericeditor")) {
+            put("bundle " + bundle, Platform.getBundle(bundle) == null ? "absent" : Platform.getBundle(bundle).getState());
+        }
         IProject project = ResourcesPlugin.getWorkspace().getRoot().getProject("intralogistics");
         project.create(null);
         project.open(null);
         for (String name : List.of("intralogistics.bt", "intralogistics.roqme", "intralogistics.miron", "notatree.xml")) {
             create(project.getFile(name), input.resolve(name));
         }
-        ui(() -> showView("org.eclipse.ui.navigator.ProjectExplorer"));
+        ui(() -> {
+            // The whole screen (no window manager under Xvfb to maximise it).
+            Display.getDefault().getActiveShell().setBounds(Display.getDefault().getBounds());
+            showView("org.eclipse.ui.navigator.ProjectExplorer");
+        });
         settle();
         put("markersBeforeNature", markers(project).size());
 
@@ -105,8 +131,23 @@ public final class WorkbenchDriver implements IStartup {
         put("markersBroken", String.join(" | ", markers(project)));
         put("generatedWhileBroken", generated.exists() ? listing(generated) : "absent");
 
-        // The Problems view, as the user sees it, for the test's screenshot.
-        ui(() -> showView("org.eclipse.ui.views.ProblemView"));
+        // The broken tree open at its marker and the Problems view, as the user sees them, for the
+        // test's screenshot.
+        ui(() -> {
+            try {
+                IMarker marker = tree.findMarkers("org.miron.eclipse.problem", false, IResource.DEPTH_ZERO)[0];
+                IDE.openEditor(PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage(), marker);
+            } catch (Exception e) {
+                put("editor", e);
+            }
+            IViewPart explorer = showView("org.eclipse.ui.navigator.ProjectExplorer");
+            if (explorer instanceof CommonNavigator navigator) {
+                navigator.getCommonViewer().expandToLevel(project, 1);
+            }
+            showView("org.eclipse.ui.views.ProblemView");
+        });
+        TimeUnit.SECONDS.sleep(2);
+        ui(WorkbenchDriver::expandProblems);
         TimeUnit.SECONDS.sleep(3);
         screenshot(Path.of(System.getProperty("miron.workbench.screenshot")));
 
@@ -199,12 +240,42 @@ public final class WorkbenchDriver implements IStartup {
         }
     }
 
-    private static void showView(String id) {
+    private static IViewPart showView(String id) {
         try {
-            PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().showView(id);
+            return PlatformUI.getWorkbench().getActiveWorkbenchWindow().getActivePage().showView(id);
         } catch (Exception e) {
             throw new IllegalStateException(e);
         }
+    }
+
+    /**
+     * Opens the Problems view's severity groups, as a click on their arrows does: the SWT Expand
+     * event makes JFace create the children (the view's viewer is internal API).
+     */
+    private static void expandProblems() {
+        for (Tree tree : trees(Display.getDefault().getActiveShell())) {
+            if (tree.getColumnCount() > 0 && "Description".equals(tree.getColumn(0).getText())) {
+                for (TreeItem item : tree.getItems()) {
+                    Event event = new Event();
+                    event.item = item;
+                    tree.notifyListeners(SWT.Expand, event);
+                    item.setExpanded(true);
+                }
+            }
+        }
+    }
+
+    private static List<Tree> trees(Control control) {
+        List<Tree> found = new ArrayList<>();
+        if (control instanceof Tree tree) {
+            found.add(tree);
+        }
+        if (control instanceof Composite composite) {
+            for (Control child : composite.getChildren()) {
+                found.addAll(trees(child));
+            }
+        }
+        return found;
     }
 
     private static void ui(Runnable action) {
