@@ -77,13 +77,12 @@ public class WorkbenchTest {
         Path reports = RepositoryRoot.get().resolve("org.miron.eclipse/build/reports/workbench");
         Files.createDirectories(reports);
         Files.deleteIfExists(reports.resolve("problems.png"));
-        int display = 90 + (int) (ProcessHandle.current().pid() % 100);
-        xvfb = new ProcessBuilder("Xvfb", ":" + display, "-screen", "0", "1280x800x24", "-nolisten", "tcp")
-                .redirectErrorStream(true).redirectOutput(reports.resolve("xvfb.log").toFile()).start();
-        Path socket = Path.of("/tmp/.X11-unix/X" + display);
-        for (int i = 0; i < 100 && !Files.exists(socket); i++) {
-            TimeUnit.MILLISECONDS.sleep(100);
-        }
+        // Xvfb picks a free display itself (others may run theirs) and tells its number on stdout.
+        xvfb = new ProcessBuilder("Xvfb", "-displayfd", "1", "-screen", "0", "1280x800x24", "-nolisten", "tcp")
+                .redirectError(reports.resolve("xvfb.log").toFile()).start();
+        String display = new java.io.BufferedReader(new java.io.InputStreamReader(xvfb.getInputStream(),
+                StandardCharsets.US_ASCII)).readLine();
+        assertTrue("Xvfb did not start: " + reports.resolve("xvfb.log"), display != null && display.matches("\\d+"));
         Path install = Path.of(System.getProperty("miron.workbench.install"));
         Path run = tmp.newFolder("run").toPath();
         Files.createDirectories(run.resolve("configuration"));
