@@ -58,7 +58,7 @@ public class WorkbenchTest {
         assumeTrue("no Xvfb (scripts/ensure-eclipse-workbench.sh installs it)", onPath("Xvfb"));
         assumeTrue("no ImageMagick's import (scripts/ensure-eclipse-workbench.sh installs it)", onPath("import"));
         input = tmp.newFolder("input").toPath();
-        Path example = RepositoryRoot.get().resolve("examples/intralogistics");
+        Path example = RepositoryRoot.resolve("examples/intralogistics");
         for (String name : List.of("intralogistics.bt", "intralogistics.roqme", "intralogistics.miron")) {
             Files.copy(example.resolve(name), input.resolve(name));
         }
@@ -74,7 +74,7 @@ public class WorkbenchTest {
         reference = tmp.newFolder("reference").toPath();
         cli(input, "generate", "intralogistics.miron", "-o", reference.toString());
 
-        Path reports = RepositoryRoot.get().resolve("org.miron.eclipse/build/reports/workbench");
+        Path reports = RepositoryRoot.resolve("org.miron.eclipse/build/reports/workbench");
         Files.createDirectories(reports);
         Files.deleteIfExists(reports.resolve("problems.png"));
         // Xvfb picks a free display itself (others may run theirs) and tells its number on stdout.
@@ -190,7 +190,7 @@ public class WorkbenchTest {
 
     @Test
     public void theProblemsViewIsOnTheScreenshot() throws Exception {
-        Path png = RepositoryRoot.get().resolve("org.miron.eclipse/build/reports/workbench/problems.png");
+        Path png = RepositoryRoot.resolve("org.miron.eclipse/build/reports/workbench/problems.png");
         assertTrue(png + " missing", Files.exists(png));
         assertTrue("an empty screenshot", Files.size(png) > 20_000);
     }
