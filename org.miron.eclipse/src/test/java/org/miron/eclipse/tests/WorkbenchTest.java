@@ -145,8 +145,8 @@ public class WorkbenchTest {
 
     @Test
     public void theValidExampleHasTheMarkersMironCheckGives() throws Exception {
-        assertEquals(expectedMarkers(input, "intralogistics.miron"), withoutRanges(one("markersValid")));
-        assertEquals(expectedMarkers(input, "intralogistics.miron"), withoutRanges(one("markersFixed")));
+        assertEquals(expectedMarkers(input, "intralogistics.miron").toString(), withoutRanges(one("markersValid")));
+        assertEquals(expectedMarkers(input, "intralogistics.miron").toString(), withoutRanges(one("markersFixed")));
     }
 
     @Test
