@@ -32,7 +32,7 @@ import org.miron.testkit.RepositoryRoot;
  * JDK under Xvfb. The driver does what a user does on the intralogistics example; this test holds
  * what it saw to what the command line says of the same files: the markers to `miron check
  * --format json`, generated/ to `miron generate` byte for byte. The Problems view's screenshot is
- * kept in build/reports/workbench/.
+ * kept in build/reports/workbench/ (problems.png), with the workbench's log and what the driver saw.
  */
 public class WorkbenchTest {
     @ClassRule
@@ -108,6 +108,7 @@ public class WorkbenchTest {
         System.out.printf("WorkbenchTest: the workbench ran %.1f s (log: %s)%n", seconds, reports.resolve("workbench.log"));
         assertTrue("the workbench did not exit within 5 minutes: " + reports.resolve("workbench.log"), exited);
         assertTrue("the driver wrote nothing: " + reports.resolve("workbench.log"), Files.exists(result));
+        Files.copy(result, reports.resolve("driver.txt"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
         seen = new LinkedHashMap<>();
         for (String line : Files.readAllLines(result)) {
             int eq = line.indexOf('=');
