@@ -6,10 +6,13 @@ import static org.junit.Assert.assertTrue;
 import static org.junit.Assume.assumeTrue;
 
 import java.io.File;
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -80,7 +83,7 @@ public class WorkbenchTest {
         // Xvfb picks a free display itself (others may run theirs) and tells its number on stdout.
         xvfb = new ProcessBuilder("Xvfb", "-displayfd", "1", "-screen", "0", "1280x800x24", "-nolisten", "tcp")
                 .redirectError(reports.resolve("xvfb.log").toFile()).start();
-        String display = new java.io.BufferedReader(new java.io.InputStreamReader(xvfb.getInputStream(),
+        String display = new BufferedReader(new InputStreamReader(xvfb.getInputStream(),
                 StandardCharsets.US_ASCII)).readLine();
         assertTrue("Xvfb did not start: " + reports.resolve("xvfb.log"), display != null && display.matches("\\d+"));
         Path install = Path.of(System.getProperty("miron.workbench.install"));
@@ -108,7 +111,7 @@ public class WorkbenchTest {
         System.out.printf("WorkbenchTest: the workbench ran %.1f s (log: %s)%n", seconds, reports.resolve("workbench.log"));
         assertTrue("the workbench did not exit within 5 minutes: " + reports.resolve("workbench.log"), exited);
         assertTrue("the driver wrote nothing: " + reports.resolve("workbench.log"), Files.exists(result));
-        Files.copy(result, reports.resolve("driver.txt"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        Files.copy(result, reports.resolve("driver.txt"), StandardCopyOption.REPLACE_EXISTING);
         seen = new LinkedHashMap<>();
         for (String line : Files.readAllLines(result)) {
             int eq = line.indexOf('=');
