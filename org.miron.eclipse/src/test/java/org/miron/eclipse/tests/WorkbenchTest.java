@@ -142,6 +142,9 @@ public class WorkbenchTest {
 
     @Test
     public void addMironNatureConfiguresTheBuilder() {
+        // Configure > Add MIRoN Nature on the project, gone once the project has the nature.
+        assertTrue(one("configureMenu"), one("configureMenu").contains("org.miron.eclipse.addNature:visible"));
+        assertTrue(one("configureMenuAfter"), one("configureMenuAfter").contains("org.miron.eclipse.addNature:hidden"));
         assertEquals("0", one("markersBeforeNature"));
         assertEquals("true", one("nature"));
         assertTrue(one("builders"), one("builders").contains("org.miron.eclipse.builder"));

@@ -23,6 +23,9 @@ import org.eclipse.core.runtime.ILogListener;
 import org.eclipse.core.runtime.IStatus;
 import org.eclipse.core.runtime.Platform;
 import org.eclipse.core.runtime.jobs.Job;
+import org.eclipse.jface.action.GroupMarker;
+import org.eclipse.jface.action.IContributionItem;
+import org.eclipse.jface.action.MenuManager;
 import org.eclipse.jface.viewers.StructuredSelection;
 import org.eclipse.swt.SWT;
 import org.eclipse.swt.widgets.Composite;
@@ -34,6 +37,7 @@ import org.eclipse.swt.widgets.TreeItem;
 import org.eclipse.ui.IStartup;
 import org.eclipse.ui.IViewPart;
 import org.eclipse.ui.ide.IDE;
+import org.eclipse.ui.menus.IMenuService;
 import org.eclipse.ui.navigator.CommonNavigator;
 import org.eclipse.ui.PlatformUI;
 import org.eclipse.ui.commands.ICommandService;
@@ -109,8 +113,10 @@ public final class WorkbenchDriver implements IStartup {
         settle();
         put("markersBeforeNature", markers(project).size());
 
-        // Configure > Add MIRoN Nature, with the project selected.
+        // Configure > Add MIRoN Nature, with the project selected: the menu item is there, then run.
+        put("configureMenu", String.join(",", configureMenu(project)));
         execute("org.miron.eclipse.addNature", project);
+        put("configureMenuAfter", String.join(",", configureMenu(project)));
         settle();
         put("nature", project.hasNature("org.miron.eclipse.nature"));
         put("builders", String.join(",", List.of(project.getDescription().getBuildSpec()).stream()
@@ -202,6 +208,37 @@ public final class WorkbenchDriver implements IStartup {
         if (failure[0] != null) {
             throw failure[0];
         }
+    }
+
+    /**
+     * The visible items of the Project Explorer's Configure submenu with the project selected there,
+     * as the workbench's menu service fills it (its visibleWhen evaluated).
+     */
+    private static List<String> configureMenu(IProject project) throws Exception {
+        List<String> items = new ArrayList<>();
+        MenuManager menu = new MenuManager("Configure", "org.eclipse.ui.projectConfigure");
+        IMenuService menus = PlatformUI.getWorkbench().getService(IMenuService.class);
+        ui(() -> {
+            IViewPart explorer = showView("org.eclipse.ui.navigator.ProjectExplorer");
+            if (explorer instanceof CommonNavigator navigator) {
+                navigator.selectReveal(new StructuredSelection(project));
+            }
+            menu.add(new GroupMarker("additions"));
+            menus.populateContributionManager(menu, "popup:org.eclipse.ui.projectConfigure");
+        });
+        // The items' visibleWhen is evaluated by the workbench, after the selection's events.
+        TimeUnit.MILLISECONDS.sleep(500);
+        ui(() -> {
+            // (e4 renders them as its own contribution items, whose id is the command's)
+            for (IContributionItem item : menu.getItems()) {
+                if (item.getId() != null && !(item instanceof GroupMarker)) {
+                    items.add(item.getId() + ":" + (item.isVisible() ? "visible" : "hidden"));
+                }
+            }
+            menus.releaseContributions(menu);
+            menu.dispose();
+        });
+        return items;
     }
 
     /** Every MIRoN marker of the project: "file:line:start-end:severity:code:message". */
