@@ -145,7 +145,7 @@ public final class Probe {
     }
 
     /**
-     * The editor bundle's "Generate MIRoN artefacts" handler, headless: a workspace project with
+     * The "Generate MIRoN artefacts" handler (bundle org.miron.eclipse), headless: a workspace project with
      * copies of the example's files, the handler executed on the .miron file selected, its job
      * awaited; answers the files of generated/ as the workspace sees them, then the status of
      * generating a broken copy ("severity message").
@@ -163,9 +163,9 @@ public final class Probe {
         org.eclipse.core.resources.IFile model = project.getFile("intralogistics.miron");
         org.eclipse.core.expressions.EvaluationContext context = new org.eclipse.core.expressions.EvaluationContext(null, model);
         context.addVariable("selection", List.of(model));
-        new org.miron.eclipse.editor.GenerateHandler()
+        new org.miron.eclipse.builder.GenerateHandler()
                 .execute(new org.eclipse.core.commands.ExecutionEvent(null, Map.of(), null, context));
-        org.eclipse.core.runtime.jobs.Job.getJobManager().join(org.miron.eclipse.editor.GenerateHandler.FAMILY, null);
+        org.eclipse.core.runtime.jobs.Job.getJobManager().join(org.miron.eclipse.builder.GenerateHandler.FAMILY, null);
         List<String> out = new ArrayList<>();
         org.eclipse.core.resources.IFolder generated = project.getFolder("generated");
         if (generated.exists()) {
@@ -176,9 +176,67 @@ public final class Probe {
         java.util.Collections.sort(out);
         org.eclipse.core.resources.IFile broken = project.getFile("broken.miron");
         broken.create(new java.io.ByteArrayInputStream(brokenModelText.getBytes(java.nio.charset.StandardCharsets.UTF_8)), true, null);
-        org.eclipse.core.runtime.IStatus status = org.miron.eclipse.editor.GenerateHandler.generate(broken);
+        org.eclipse.core.runtime.IStatus status = org.miron.eclipse.builder.ArtefactGeneration.generate(broken);
         out.add((status.getSeverity() == org.eclipse.core.runtime.IStatus.ERROR ? "ERROR " : "NOT-ERROR ") + status.getMessage());
         return out;
+    }
+
+    /**
+     * The builder, headless: a project with copies of the example's model files, the MIRoN nature
+     * added, built; then its tree replaced with brokenTree and built again (incrementally); then
+     * restored and built. Answers, for each of the three builds, "markers: file:line:code ..." and
+     * "generated: names".
+     */
+    public static List<String> buildWithNature(String exampleDir, String brokenTree) throws Exception {
+        // Builds only when asked, so each one sees its change (the workbench test has auto-builds).
+        org.eclipse.core.resources.IWorkspace workspace = org.eclipse.core.resources.ResourcesPlugin.getWorkspace();
+        org.eclipse.core.resources.IWorkspaceDescription description = workspace.getDescription();
+        description.setAutoBuilding(false);
+        workspace.setDescription(description);
+        org.eclipse.core.resources.IProject project =
+                org.eclipse.core.resources.ResourcesPlugin.getWorkspace().getRoot().getProject("built");
+        project.create(null);
+        project.open(null);
+        for (String name : List.of("intralogistics.bt", "intralogistics.roqme", "intralogistics.miron")) {
+            try (java.io.InputStream in = new java.io.FileInputStream(new File(exampleDir, name))) {
+                project.getFile(name).create(in, true, null);
+            }
+        }
+        org.miron.eclipse.builder.MironNature.addTo(project);
+        List<String> out = new ArrayList<>();
+        project.build(org.eclipse.core.resources.IncrementalProjectBuilder.FULL_BUILD, null);
+        describe(project, out);
+        org.eclipse.core.resources.IFile tree = project.getFile("intralogistics.bt");
+        byte[] good = java.nio.file.Files.readAllBytes(new File(exampleDir, "intralogistics.bt").toPath());
+        project.getFolder("generated").delete(true, null);
+        tree.setContents(new java.io.ByteArrayInputStream(brokenTree.getBytes(java.nio.charset.StandardCharsets.UTF_8)),
+                true, false, null);
+        project.build(org.eclipse.core.resources.IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        describe(project, out);
+        tree.setContents(new java.io.ByteArrayInputStream(good), true, false, null);
+        project.build(org.eclipse.core.resources.IncrementalProjectBuilder.INCREMENTAL_BUILD, null);
+        describe(project, out);
+        return out;
+    }
+
+    private static void describe(org.eclipse.core.resources.IProject project, List<String> out) throws Exception {
+        List<String> markers = new ArrayList<>();
+        for (org.eclipse.core.resources.IMarker m : project.findMarkers("org.miron.eclipse.problem", true,
+                org.eclipse.core.resources.IResource.DEPTH_INFINITE)) {
+            markers.add(m.getResource().getName() + ":" + m.getAttribute(org.eclipse.core.resources.IMarker.LINE_NUMBER, 0)
+                    + ":" + m.getAttribute("code", ""));
+        }
+        java.util.Collections.sort(markers);
+        out.add("markers: " + String.join(" ", markers));
+        List<String> names = new ArrayList<>();
+        org.eclipse.core.resources.IFolder generated = project.getFolder("generated");
+        if (generated.exists()) {
+            for (org.eclipse.core.resources.IResource r : generated.members()) {
+                names.add(r.getName());
+            }
+        }
+        java.util.Collections.sort(names);
+        out.add("generated: " + String.join(" ", names));
     }
 
     /** Generates the .miron files into dir: the stage, then the names written. */

@@ -272,7 +272,20 @@ public class EquinoxTest {
     }
 
     @Test
-    public void generateCommandWritesTheSixFilesThroughTheServer() throws Exception {
+    public void theBuilderMarksABrokenImportAndGeneratesItsImporterAgainOnceFixed() throws Exception {
+        String tree = Files.readString(example("intralogistics.bt"));
+        String broken = tree.replace("<SubTreePlus ID=\"GoTo\" __shared_blackboard=\"false\" x_input=\"-9.33\"",
+                "<SubTreePlus ID=\"GoTooo\" __shared_blackboard=\"false\" x_input=\"-9.33\"");
+        assertFalse(broken.equals(tree));
+        List<String> result = call("buildWithNature", example("intralogistics.miron").getParent().toString(), broken);
+        String six = "generated: intralogistics.dzn intralogistics.ext.xml intralogistics.io.json intralogistics.mzn"
+                + " intralogistics.requirements.json intralogistics.roqme.json";
+        assertEquals(List.of("markers: ", six, "markers: intralogistics.bt:17:bt.unknown-subtree", "generated: ",
+                "markers: ", six), result);
+    }
+
+    @Test
+    public void generateCommandWritesTheSixFilesThroughTheCore() throws Exception {
         String broken = Files.readString(example("intralogistics.miron")).replaceFirst("import", "imprt");
         List<String> result = call("generateThroughCommand", example("intralogistics.miron").getParent().toString(), broken);
         // Six files in generated/ (tree, mzn, dzn, io.json, requirements.json, roqme.json), refreshed

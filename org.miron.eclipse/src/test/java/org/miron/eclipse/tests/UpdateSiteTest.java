@@ -69,7 +69,7 @@ public class UpdateSiteTest {
     @Test
     public void metadataListsEveryBundleWithItsVersion() throws Exception {
         Map<String, String> shipped = shippedBundles();
-        for (String ours : new String[] {"org.miron.bt", "org.miron.dsl", "org.miron.generator", "org.miron.eclipse.editor"}) {
+        for (String ours : new String[] {"org.miron.bt", "org.miron.dsl", "org.miron.generator", "org.miron.eclipse", "org.miron.eclipse.editor"}) {
             assertEquals(ours, version, shipped.get(ours));
         }
         assertTrue(shipped.containsKey("com.fasterxml.jackson.core.jackson-databind"));
