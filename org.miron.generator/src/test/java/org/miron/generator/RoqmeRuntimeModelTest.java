@@ -41,6 +41,17 @@ public class RoqmeRuntimeModelTest {
         return JsonSchemaFile.ROQME_MODEL.assertValid(out.resolve(base + ".roqme.json"));
     }
 
+    /** An array context (the hospital example had one until issue 40: its world could not publish it). */
+    @org.junit.Test
+    public void anArrayContextKeepsItsCardinality() throws IOException {
+        Path model = temp.newFolder().toPath().resolve("arrays.roqme");
+        java.nio.file.Files.writeString(model, "roqme Arrays\n\n/** Speed readings of the last ten cycles. */\n"
+                + "context speeds : number [10] (0:1.5)\n\nproperty comfort\n\n"
+                + "observation fast : avg(speeds) > 0.8 undermines comfort\n");
+        JsonNode generated = generate(model);
+        assertEquals(json("{'kind':'number','lower':0,'upper':1.5,'cardinality':10}"), find(generated, "contexts", "speeds").get("type"));
+    }
+
     /** JSON written with single quotes, for readable expectations. */
     private static JsonNode json(String text) throws IOException {
         return MAPPER.readTree(text.replace('\'', '"'));
@@ -233,14 +244,15 @@ public class RoqmeRuntimeModelTest {
         assertEquals(json("{'op':'while','arg':{'ref':'delivered','type':'event'},'cond':{'op':'<','left':"
                 + "{'ref':'missionTime','type':'time'},'right':{'ref':'maxMissionTime','type':'time'},'type':'boolean'},"
                 + "'type':'boolean'}"), find(model, "observations", "onTime").get("pattern"));
-        // value logic & of a postfix call over a time window and a derived context
-        assertEquals(json("{'op':'&','left':{'call':'decreasing','args':[{'ref':'battery','type':'number'},"
-                + "{'time':300000,'type':'time'}],'type':'boolean'},'right':{'ref':'lowBattery','type':'boolean'},"
-                + "'type':'boolean'}"), find(model, "observations", "draining").get("pattern"));
+        // a timer while value logic & of a postfix call over a time window and a derived context
+        assertEquals(json("{'op':'while','arg':{'ref':'batteryCheck','type':'event'},'cond':{'op':'&','left':"
+                + "{'call':'decreasing','args':[{'ref':'battery','type':'number'},{'time':300000,'type':'time'}],"
+                + "'type':'boolean'},'right':{'ref':'lowBattery','type':'boolean'},'type':'boolean'},'type':'boolean'}"),
+                find(model, "observations", "draining").get("pattern"));
         // an enum declared inline is named after its context
         assertEquals(json("{'enum':'night','enumType':'shift','type':'enum'}"),
                 find(model, "observations", "nightDriving").get("pattern").get("left").get("right"));
-        assertEquals(json("{'kind':'number','lower':0,'upper':1.5,'cardinality':10}"), find(model, "contexts", "speeds").get("type"));
+        assertEquals(json("{'kind':'number','lower':0,'upper':1.5,'unit':'m/s'}"), find(model, "contexts", "speed").get("type"));
         assertEquals(json("{'kind':'time','upper':3600}"), find(model, "contexts", "missionTime").get("type"));
         assertEquals(json("{'kind':'number','lower':0,'upper':100,'unit':'%'}"), find(model, "contexts", "battery").get("type"));
         assertEquals(json("{'time':900000,'type':'time'}"), find(model, "params", "maxMissionTime").get("default"));
