@@ -4,12 +4,9 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertNotNull;
 import static org.junit.Assert.assertTrue;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.Rule;
@@ -17,22 +14,12 @@ import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Endpoints;
 import org.miron.testkit.runtime.GrootClient;
-import org.zeromq.ZMQ;
-import picocli.CommandLine;
 
 /** {@code miron execute TREE --groot PORT} as a real process: Groot2 is served, and SIGTERM ends a tree paused at a breakpoint. */
 public class ExecuteGrootTest {
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
 
-    private static String classpath() {
-        List<String> parts = new ArrayList<>();
-        for (Class<?> c : new Class<?>[] { MironCli.class, CommandLine.class, ZMQ.class, ObjectMapper.class }) {
-            parts.add(c.getProtectionDomain().getCodeSource().getLocation().getPath());
-        }
-        parts.add(System.getProperty("java.class.path"));
-        return String.join(File.pathSeparator, parts);
-    }
 
     @Test
     public void executeServesGrootAndStopsWhilePausedAtABreakpoint() throws Exception {
@@ -44,7 +31,7 @@ public class ExecuteGrootTest {
         Path out = tmp.getRoot().toPath().resolve("stdout.txt");
         Path err = tmp.getRoot().toPath().resolve("stderr.txt");
         Process p = new ProcessBuilder(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                classpath(), MironCli.class.getName(), "execute", tree.toString(), "--period", "20", "--groot",
+                CliProcess.classpath(), MironCli.class.getName(), "execute", tree.toString(), "--period", "20", "--groot",
                 Integer.toString(port), "--request", ep.request(), "--bus-in", ep.busIn(), "--bus-out", ep.busOut(),
                 "--skill-events", ep.skillEvents()))
                 .redirectOutput(out.toFile()).redirectError(err.toFile()).start();

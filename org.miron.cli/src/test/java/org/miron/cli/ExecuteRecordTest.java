@@ -4,15 +4,12 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.File;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -20,7 +17,6 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Endpoints;
-import org.zeromq.ZMQ;
 import picocli.CommandLine;
 
 /**
@@ -32,14 +28,6 @@ public class ExecuteRecordTest {
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
 
-    private static String classpath() {
-        List<String> parts = new ArrayList<>();
-        for (Class<?> c : new Class<?>[] { MironCli.class, CommandLine.class, ZMQ.class, ObjectMapper.class }) {
-            parts.add(c.getProtectionDomain().getCodeSource().getLocation().getPath());
-        }
-        parts.add(System.getProperty("java.class.path"));
-        return String.join(File.pathSeparator, parts);
-    }
 
     @Test
     public void aRecordingCutShortByAKillReplaysUpToItsLastCompleteTransition() throws Exception {
@@ -49,7 +37,7 @@ public class ExecuteRecordTest {
         Path btlog = tmp.getRoot().toPath().resolve("loop.btlog");
         Endpoints ep = Endpoints.freeLoopback();
         Process p = new ProcessBuilder(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                classpath(), MironCli.class.getName(), "execute", tree.toString(), "--period", "5", "--record", btlog.toString(),
+                CliProcess.classpath(), MironCli.class.getName(), "execute", tree.toString(), "--period", "5", "--record", btlog.toString(),
                 "--request", ep.request(), "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--skill-events", ep.skillEvents()))
                 .redirectErrorStream(true).redirectOutput(tmp.getRoot().toPath().resolve("out.txt").toFile()).start();
         int header;

@@ -4,12 +4,9 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.Rule;
@@ -17,32 +14,19 @@ import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.bus.BusClient;
-import org.zeromq.ZMQ;
-import picocli.CommandLine;
 
 /** The broker as a real process: ignores a closed stdin, serves, stops cleanly on SIGTERM. */
 public class ProcessShutdownTest {
     @Rule
     public TemporaryFolder tmp = new TemporaryFolder();
 
-    private static String classpath() {
-        List<String> parts = new ArrayList<>();
-        for (Class<?> c : new Class<?>[] {MironCli.class, CommandLine.class, ZMQ.class, ObjectMapper.class,
-                com.fasterxml.jackson.core.JsonFactory.class, com.fasterxml.jackson.annotation.JsonProperty.class}) {
-            parts.add(c.getProtectionDomain().getCodeSource().getLocation().getPath());
-        }
-        // The jars of the classes we use, wherever the test worker loaded them from; plus the
-        // worker's own class path for the rest (e.g. JeroMQ's jnacl).
-        parts.add(System.getProperty("java.class.path"));
-        return String.join(File.pathSeparator, parts);
-    }
 
     @Test
     public void brokerRunsWithoutStdinAndStopsCleanlyOnSigterm() throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         Path err = tmp.getRoot().toPath().resolve("stderr.txt");
         Process p = new ProcessBuilder(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", classpath(),
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", CliProcess.classpath(),
                 MironCli.class.getName(), "broker", "--request", ep.request(), "--skill", ep.skill(),
                 "--bus-in", ep.busIn(), "--bus-out", ep.busOut()))
                 .redirectError(err.toFile()).redirectOutput(tmp.getRoot().toPath().resolve("stdout.txt").toFile())

@@ -1,17 +1,16 @@
 package org.miron.cli.monitor;
 
+import org.miron.cli.CliProcess;
+
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertNotNull;
-import static org.junit.Assert.assertTrue;
 
-import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.function.Predicate;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -31,9 +30,7 @@ import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 
-import picocli.CommandLine;
 
 /**
  * The live page's debugger in headless Chromium over a real `miron execute --repeat --monitor M
@@ -251,7 +248,7 @@ public class DebugPageBrowserTest {
             out = Files.createTempFile(logs, "execute", ".out");
             err = Files.createTempFile(logs, "execute", ".err");
             List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-cp", classpath(), MironCli.class.getName(), "execute", treeFile().toString(), "--repeat", "--period", "20",
+                    "-cp", CliProcess.classpath(), MironCli.class.getName(), "execute", treeFile().toString(), "--repeat", "--period", "20",
                     "--request", ep.request(), "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--skill-events", ep.skillEvents()));
             command.addAll(List.of(options));
             process = new ProcessBuilder(command).redirectOutput(out.toFile()).redirectError(err.toFile()).start();
@@ -279,12 +276,4 @@ public class DebugPageBrowserTest {
         }
     }
 
-    private static String classpath() {
-        List<String> parts = new ArrayList<>();
-        for (Class<?> c : new Class<?>[] { MironCli.class, CommandLine.class, ZMQ.class, ObjectMapper.class }) {
-            parts.add(c.getProtectionDomain().getCodeSource().getLocation().getPath());
-        }
-        parts.add(System.getProperty("java.class.path"));
-        return String.join(File.pathSeparator, parts);
-    }
 }
