@@ -11,7 +11,7 @@ import picocli.CommandLine.Command;
                 + "mock, scenario player and BT executor; or all of them at once with demo.",
         subcommands = { CheckCommand.class, FormatCommand.class, ConvertCommand.class, GenerateCommand.class, RenderCommand.class,
                 DemoCommand.class, SimulateCommand.class, VerifyCommand.class, BrokerCommand.class, EngineCommand.class, SkillMockCommand.class, PlayCommand.class, RoqmeCommand.class, DdsBridgeCommand.class,
-                ExecuteCommand.class, ReplayCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
+                RunCommand.class, ExecuteCommand.class, ReplayCommand.class, LspCommand.class, CommandLine.HelpCommand.class })
 public class MironCli implements Runnable {
 
     @Override

@@ -1,0 +1,142 @@
+package org.miron.cli.faults;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertFalse;
+import static org.junit.Assert.assertNotNull;
+import static org.junit.Assert.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.URI;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Pattern;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.miron.cli.MironCli;
+import org.miron.runtime.Endpoints;
+import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Topics;
+import org.miron.testkit.RepositoryRoot;
+import org.miron.testkit.runtime.BusProbe;
+
+/**
+ * {@code miron run} as a real process on free loopback ports, a Java peer on its bus: the robot's
+ * contexts in, the provider's estimates, the monitors' status and the engine's decisions out;
+ * SIGTERM as its help says; a busy endpoint and a model with errors refused before anything runs.
+ */
+public class RunCommandTest {
+    private static final long TIMEOUT = 60_000;
+    private static final String MODEL = RepositoryRoot.resolve("examples/intralogistics/intralogistics.miron").toString();
+    @Rule
+    public TemporaryFolder tmp = new TemporaryFolder();
+    private final Endpoints ep = Endpoints.freeLoopback();
+
+    private String[] args(String... extra) {
+        List<String> a = new ArrayList<>(List.of("run", MODEL, "--request", ep.request(), "--skill", ep.skill(),
+                "--bus-in", ep.busIn(), "--bus-out", ep.busOut(),
+                "--decision-log", tmp.getRoot().toPath().resolve("decisions.jsonl").toString()));
+        a.addAll(List.of(extra));
+        return a.toArray(String[]::new);
+    }
+
+    private static int documentedSigterm() {
+        String help = MironCli.commandLine().getSubcommands().get("run").getUsageMessage();
+        java.util.regex.Matcher m = Pattern.compile("(?m)^\\s*(\\d+)\\s+.*SIGTERM").matcher(help);
+        assertTrue(help, m.find());
+        return Integer.parseInt(m.group(1));
+    }
+
+    private static String context(String name, String type, Object value) {
+        return "{\"name\":\"" + name + "\",\"namespace\":\"Intralogistics\",\"type\":\"" + type + "\",\"value\":" + value + "}";
+    }
+
+    @Test
+    public void runsProviderMonitorsAndEngineInOneProcessAndStopsOnSigterm() throws Exception {
+        Path dir = tmp.getRoot().toPath();
+        try (RuntimeProcess p = RuntimeProcess.start(dir, "run", args("--period", "200"))) {
+            assertTrue(p.output(), p.awaitOutput("miron run: running intralogistics.miron", TIMEOUT));
+            String out = p.output();
+            for (String line : new String[] { "miron run: broker: requests " + ep.request() + " -> skill interface " + ep.skill()
+                    + ", bus " + ep.busIn() + " -> " + ep.busOut(), "miron run: requirements: 5 monitored",
+                    "miron run: roqme provider: model intralogistics", "miron run: engine: model intralogistics, backend native" }) {
+                assertTrue(line + " in:\n" + out, out.contains(line));
+            }
+            try (BusProbe probe = new BusProbe(ep.busOut(), "roqme.", "miron.");
+                    BusClient robot = new BusClient("test-robot", ep.busIn(), null, List.of(), (t, b) -> { }).start()) {
+                assertTrue(robot.awaitReady(TIMEOUT));
+                // the engine's first decision, from the broker's cache
+                assertNotNull(p.output(), probe.await(Topics.VARIANT_PREFIX + "task", b -> b.path("varpoint").asText().equals("task"), TIMEOUT));
+                long end = System.currentTimeMillis() + TIMEOUT;
+                JsonNode estimate = null;
+                while (estimate == null && System.currentTimeMillis() < end) {
+                    robot.publish(Topics.CONTEXT, context("BatteryLevel", "number", 5));
+                    robot.publish(Topics.CONTEXT, context("HumanDistance", "number", 0.8));
+                    estimate = probe.await(Topics.ESTIMATE, b -> b.path("name").asText().equals("power_autonomy"), 300);
+                }
+                assertNotNull("the provider's estimates:\n" + p.output(), estimate);
+                assertNotNull("the requirement monitors' status:\n" + p.output(), probe.await(Topics.REQUIREMENT_STATUS,
+                        b -> b.path("counters").path("contextsIn").asLong() > 0, TIMEOUT));
+                assertTrue(p.output(), p.isAlive());
+            }
+            assertEquals(p.output(), documentedSigterm(), p.terminate(TIMEOUT));
+            assertFalse(p.output(), p.output().contains("Exception"));
+        }
+    }
+
+    /** Without the provider, estimates from elsewhere drive the engine: power_autonomy below 0.3 docks the robot. */
+    @Test
+    public void withoutProviderTheEstimatesFromElsewhereDecide() throws Exception {
+        Path dir = tmp.getRoot().toPath();
+        try (RuntimeProcess p = RuntimeProcess.start(dir, "run", args("--no-provider"))) {
+            assertTrue(p.output(), p.awaitOutput("miron run: running intralogistics.miron", TIMEOUT));
+            assertTrue(p.output(), p.output().contains("miron run: roqme provider: not run"));
+            try (BusProbe probe = new BusProbe(ep.busOut(), Topics.VARIANT_PREFIX);
+                    BusClient roqme = new BusClient("test-roqme", ep.busIn(), null, List.of(), (t, b) -> { }).start()) {
+                assertTrue(roqme.awaitReady(TIMEOUT));
+                long end = System.currentTimeMillis() + TIMEOUT;
+                JsonNode dock = null;
+                while (dock == null && System.currentTimeMillis() < end) {
+                    roqme.publish(Topics.ESTIMATE, "{\"name\":\"power_autonomy\",\"namespace\":\"Intralogistics\",\"value\":0.1}");
+                    dock = probe.await(Topics.VARIANT_PREFIX + "task", b -> b.path("value").asText().equals("dock"), 300);
+                }
+                assertNotNull("task = dock:\n" + p.output(), dock);
+            }
+            assertEquals(p.output(), documentedSigterm(), p.terminate(TIMEOUT));
+        }
+    }
+
+    @Test
+    public void aBusyEndpointIsExit2NamingItAndNothingRuns() throws Exception {
+        int port = URI.create(ep.busOut().replace("tcp://", "http://")).getPort();
+        try (ServerSocket busy = new ServerSocket(port, 1, InetAddress.getLoopbackAddress());
+                RuntimeProcess p = RuntimeProcess.start(tmp.getRoot().toPath(), "run", args())) {
+            assertEquals(p.output(), 2, p.awaitExit(TIMEOUT));
+            assertTrue(p.output(), p.output().contains("miron run: error: broker cannot bind its endpoints: " + ep.busOut()));
+            assertFalse(p.output(), p.output().contains("miron run: engine:"));
+        }
+    }
+
+    @Test
+    public void aModelWithErrorsIsExit1WithFileLineCol() throws Exception {
+        Path dir = tmp.newFolder("model").toPath();
+        Path examples = RepositoryRoot.resolve("examples/intralogistics");
+        for (String f : new String[] { "intralogistics.bt", "intralogistics.roqme" }) {
+            Files.copy(examples.resolve(f), dir.resolve(f));
+        }
+        Path model = dir.resolve("intralogistics.miron");
+        Files.writeString(model, Files.readString(examples.resolve("intralogistics.miron"))
+                .replace("implies task = task::dock", "implies task = task::nowhere"));
+        List<String> a = new ArrayList<>(List.of(args()));
+        a.set(1, model.toString());
+        try (RuntimeProcess p = RuntimeProcess.start(tmp.getRoot().toPath(), "run", a.toArray(String[]::new))) {
+            assertEquals(p.output(), 1, p.awaitExit(TIMEOUT));
+            assertTrue(p.output(), Pattern.compile("(?m)^" + Pattern.quote(model.toString()) + ":\\d+:\\d+: error").matcher(p.output()).find());
+            assertFalse(p.output(), p.output().contains("miron run: broker:"));
+        }
+    }
+}
