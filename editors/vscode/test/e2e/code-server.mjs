@@ -722,25 +722,6 @@ async function issue23Checks(page, u) {
         await u.cursorOn(':= count(', 5);
         await u.hoverSays('count(', 'window');
     });
-    await check('completion after task:: offers no operators', async () => {
-        await u.open('typing.miron');
-        // Ends the rule typed by the check before.
-        await page.locator('.editor-instance .monaco-editor textarea').first().focus();
-        await page.keyboard.press('Control+End');
-        await page.keyboard.type('dock', { delay: 20 });
-        await page.keyboard.press('Escape');
-        const before = completionCount('typing.miron');
-        await u.typeAtEnd('rule quiet : roqme.safety < 0.4 implies task = task::');
-        await u.suggestUntil('dock');
-        const labels = await completionLabels('typing.miron', before, await u.cursor());
-        const noise = labels.filter((l) => ['&', "'", '*', '+', '-', '->', '|', '(', '<', '='].includes(l));
-        if (noise.length) throw new Error(`operators proposed after task::: ${noise.join(' ')} (all: ${labels.join(' ')})`);
-        const shown = await u.suggestions();
-        if (shown.some((l) => !/dock|deliver|pick/.test(l))) throw new Error(`the suggest widget shows ${shown.join(' | ')}`);
-        await page.keyboard.press('Escape');
-        await page.keyboard.type('dock', { delay: 20 });
-        await page.keyboard.press('Escape');
-    });
     await check('completion after < in a version-4 tree: its elements first, no <, </ or version-3 nodes', async () => {
         await u.open('compact.bt');
         const before = completionCount('compact.bt');
@@ -912,12 +893,20 @@ async function realChecks(page) {
         });
         if (!line) throw new Error('no cursor line');
     });
-    await check('completion after task:: offers the varpoint\'s values', async () => {
+    await check('completion after task:: offers the varpoint\'s values, and no operators', async () => {
         await u.open('typing.miron');
+        const before = completionCount('typing.miron');
         await u.typeAtEnd('rule typed : roqme.safety < 0.5 implies task = task::');
         await u.suggestUntil('dock');
         await page.locator('.suggest-widget .monaco-list-row', { hasText: 'deliver' }).first().waitFor({ timeout: T });
         await page.screenshot({ path: join(out, 'completion.png') });
+        const labels = await completionLabels('typing.miron', before, await u.cursor());
+        const noise = labels.filter((l) => ['&', "'", '*', '+', '-', '->', '|', '(', '<', '='].includes(l));
+        if (noise.length) throw new Error(`operators proposed after task::: ${noise.join(' ')} (all: ${labels.join(' ')})`);
+        const shown = await u.suggestions();
+        if (shown.some((l) => !/dock|deliver|pick/.test(l))) throw new Error(`the suggest widget shows ${shown.join(' | ')}`);
+        await page.keyboard.press('Escape');
+        await page.keyboard.type('dock', { delay: 20 }); // the rule ends, the file parses again
         await page.keyboard.press('Escape');
     });
     await check('the client asks for semantic tokens, which the server offers', async () => {
