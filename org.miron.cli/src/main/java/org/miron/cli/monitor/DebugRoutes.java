@@ -2,7 +2,6 @@ package org.miron.cli.monitor;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 
 import org.miron.runtime.Json;
@@ -99,12 +98,7 @@ final class DebugRoutes {
     }
 
     private static void reply(HttpExchange exchange, int code, String body) throws IOException {
-        byte[] bytes = body.getBytes(StandardCharsets.UTF_8);
-        exchange.getResponseHeaders().set("Content-Type", code == 200 ? "application/json" : "text/plain; charset=utf-8");
-        exchange.getResponseHeaders().set("Cache-Control", "no-store");
-        exchange.sendResponseHeaders(code, bytes.length);
-        try (OutputStream out = exchange.getResponseBody()) {
-            out.write(bytes);
-        }
+        HttpReplies.reply(exchange, code, code == 200 ? "application/json" : "text/plain; charset=utf-8",
+                body.getBytes(StandardCharsets.UTF_8));
     }
 }

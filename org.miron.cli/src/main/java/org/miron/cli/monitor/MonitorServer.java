@@ -77,24 +77,11 @@ public final class MonitorServer implements AutoCloseable {
     }
 
     private void page(HttpExchange exchange) throws IOException {
-        if (!exchange.getRequestURI().getPath().equals("/")) {
-            reply(exchange, 404, "text/plain", "not found\n".getBytes(StandardCharsets.UTF_8));
-            return;
-        }
-        reply(exchange, 200, "text/html; charset=utf-8", page);
+        HttpReplies.page(exchange, page);
     }
 
     private void state(HttpExchange exchange) throws IOException {
-        reply(exchange, 200, "application/json", state.snapshot().toString().getBytes(StandardCharsets.UTF_8));
-    }
-
-    private static void reply(HttpExchange exchange, int code, String type, byte[] body) throws IOException {
-        exchange.getResponseHeaders().set("Content-Type", type);
-        exchange.getResponseHeaders().set("Cache-Control", "no-store");
-        exchange.sendResponseHeaders(code, body.length);
-        try (OutputStream out = exchange.getResponseBody()) {
-            out.write(body);
-        }
+        HttpReplies.reply(exchange, 200, "application/json", state.snapshot().toString().getBytes(StandardCharsets.UTF_8));
     }
 
     /** One page's event stream, until it goes away or the server closes. */

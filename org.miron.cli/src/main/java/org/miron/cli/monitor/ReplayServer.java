@@ -44,7 +44,7 @@ public final class ReplayServer implements AutoCloseable {
         server = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 0);
         server.setExecutor(threads);
         server.createContext("/", this::page);
-        server.createContext("/state", exchange -> reply(exchange, 200, "application/json", state(instant(exchange, at))));
+        server.createContext("/state", exchange -> HttpReplies.reply(exchange, 200, "application/json", state(instant(exchange, at))));
         server.createContext("/seek", this::seek);
         server.createContext("/events", this::events);
         server.start();
@@ -63,25 +63,21 @@ public final class ReplayServer implements AutoCloseable {
     }
 
     private void page(HttpExchange exchange) throws IOException {
-        if (!exchange.getRequestURI().getPath().equals("/")) {
-            reply(exchange, 404, "text/plain", "not found\n".getBytes(StandardCharsets.UTF_8));
-            return;
-        }
-        reply(exchange, 200, "text/html; charset=utf-8", page);
+        HttpReplies.page(exchange, page);
     }
 
     /** Moves the instant every page shows; answers the state there. */
     private void seek(HttpExchange exchange) throws IOException {
         long to = instant(exchange, -1);
         if (to < 0) {
-            reply(exchange, 400, "text/plain", "seek?at=MS: milliseconds since the recording started\n".getBytes(StandardCharsets.UTF_8));
+            HttpReplies.reply(exchange, 400, "text/plain", "seek?at=MS: milliseconds since the recording started\n".getBytes(StandardCharsets.UTF_8));
             return;
         }
         at = to;
         byte[] state = state(to);
         String data = new String(state, StandardCharsets.UTF_8);
         pages.forEach(q -> q.offer(data));
-        reply(exchange, 200, "application/json", state);
+        HttpReplies.reply(exchange, 200, "application/json", state);
     }
 
     /** {@code at=MS} of the query, clamped to the recording; {@code otherwise} when absent or not a number. */
@@ -99,15 +95,6 @@ public final class ReplayServer implements AutoCloseable {
             }
         }
         return otherwise;
-    }
-
-    private static void reply(HttpExchange exchange, int code, String type, byte[] body) throws IOException {
-        exchange.getResponseHeaders().set("Content-Type", type);
-        exchange.getResponseHeaders().set("Cache-Control", "no-store");
-        exchange.sendResponseHeaders(code, body.length);
-        try (OutputStream out = exchange.getResponseBody()) {
-            out.write(body);
-        }
     }
 
     private void events(HttpExchange exchange) throws IOException {
