@@ -20,7 +20,8 @@ import org.miron.dds.transport.DdsTransport;
 import org.miron.dds.transport.RosNames;
 import org.miron.dds.transport.TopicSpec;
 import org.miron.runtime.Json;
-import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Bus;
+import org.miron.runtime.bus.BusLink;
 import org.miron.runtime.bus.Topics;
 
 /**
@@ -42,7 +43,7 @@ public final class Bridge implements AutoCloseable {
 
     private final BridgeConfig config;
     private final DdsTransport dds;
-    private final BusClient bus;
+    private final Bus bus;
     private final BridgeCounters counters = new BridgeCounters();
     private final List<AutoCloseable> entities = new ArrayList<>();
     /** Per DDS topic name, how many remote endpoints each of our readers and writers on it has matched. */
@@ -72,6 +73,11 @@ public final class Bridge implements AutoCloseable {
      *                      change-parameter queries there when a decision mapping names a {@code parameter}
      */
     public Bridge(BridgeConfig config, DdsTransport dds, String busIn, String busOut, String skillEndpoint, long statusIntervalMs) {
+        this(config, dds, BusLink.sockets(busIn, busOut), skillEndpoint, statusIntervalMs);
+    }
+
+    /** The same, on a given bus link: sockets, or a broker's {@code local()} in this process. */
+    public Bridge(BridgeConfig config, DdsTransport dds, BusLink link, String skillEndpoint, long statusIntervalMs) {
         this.config = config;
         this.skillEndpoint = skillEndpoint;
         this.dds = dds;
@@ -83,7 +89,7 @@ public final class Bridge implements AutoCloseable {
         if (!config.estimates().isEmpty() || (config.roqme() != null && config.roqme().estimates().equals("out"))) {
             subscriptions.add(Topics.ESTIMATE);
         }
-        this.bus = new BusClient("dds-bridge", busIn, busOut, subscriptions, this::onBus);
+        this.bus = link.open("dds-bridge", subscriptions, this::onBus);
     }
 
     /**

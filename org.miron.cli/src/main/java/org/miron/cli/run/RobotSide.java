@@ -13,6 +13,7 @@ import org.miron.dds.transport.DdsException;
 import org.miron.dds.transport.IhmcTransport;
 import org.miron.runtime.Endpoints;
 import org.miron.runtime.broker.Broker;
+import org.miron.runtime.bus.BusLink;
 import org.miron.runtime.engine.Engine;
 import org.miron.runtime.engine.EngineOptions;
 import org.miron.runtime.engine.EngineStartException;
@@ -24,13 +25,16 @@ import org.miron.runtime.roqme.LiveProvider;
  * The MIRoN side of a robot in one process ({@code miron run}): the broker on its endpoints, then
  * the requirement monitors and the RoQME provider (each waits until the broker has replayed its
  * cache to it), the optional DDS bridge, and the engine last, so that its first decision reaches
- * monitors that listen. External peers (executor, skill interface, the robot's contexts) see the
- * same wire as with the separate components. All or nothing: if one component cannot start, the
+ * monitors that listen. They reach the broker through its local links, without sockets; external
+ * peers (executor, skill interface, the robot's contexts) see the same wire as with the separate
+ * components. All or nothing: if one component cannot start, the
  * ones already started are closed and {@link StartException} says why.
  */
 public final class RobotSide implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(RobotSide.class.getName());
     private static final long SUBSCRIBE_MS = 10_000;
+    /** How the start-up lines name the components' link to the broker. */
+    static final String IN_PROCESS = "bus in process (no sockets to the broker)";
 
     /** A component could not start; nothing runs. */
     public static final class StartException extends Exception {
@@ -113,12 +117,14 @@ public final class RobotSide implements AutoCloseable {
         }
         running.push(broker);
         running.push(engine); // closed first, whether it started or not
+        BusLink local = broker.local(); // the components here reach the broker without sockets
+        eo.bus = local;
         say.accept("broker: requests " + ep.request() + " -> skill interface " + ep.skill() + ", bus " + ep.busIn()
                 + " -> " + ep.busOut() + (options.cacheFile == null ? "" : ", cache file " + options.cacheFile));
         if (model.requirements() != null) {
             LiveRequirements checks;
             try {
-                checks = new LiveRequirements(model.requirements(), ep.busIn(), ep.busOut()).onEvent(onRequirement);
+                checks = new LiveRequirements(model.requirements(), local).onEvent(onRequirement);
             } catch (IllegalArgumentException e) {
                 throw new StartException("requirement monitors: " + e.getMessage());
             }
@@ -129,11 +135,10 @@ public final class RobotSide implements AutoCloseable {
             }
             say.accept("requirements: " + model.requirements().requirements().size() + " monitored ("
                     + String.join(", ", model.requirements().requirements().stream().map(r -> r.name()).toList())
-                    + "), bus " + ep.busIn() + " / " + ep.busOut());
+                    + "), " + IN_PROCESS);
         }
         if (model.roqme() != null) {
-            LiveProvider provider = new LiveProvider(model.roqme(), options.periodMs, options.providerStatusMs, ep.busIn(),
-                    ep.busOut());
+            LiveProvider provider = new LiveProvider(model.roqme(), options.periodMs, options.providerStatusMs, local);
             running.push(provider);
             provider.start();
             if (!provider.awaitSubscribed(SUBSCRIBE_MS)) {
@@ -141,8 +146,8 @@ public final class RobotSide implements AutoCloseable {
             }
             say.accept("roqme provider: model " + model.roqme().model().model() + ", "
                     + model.roqme().model().beliefs().stream().filter(b -> b.isProperty()).count() + " properties, "
-                    + model.roqme().observations().size() + " observations, period " + options.periodMs + " ms, bus "
-                    + ep.busIn() + " / " + ep.busOut());
+                    + model.roqme().observations().size() + " observations, period " + options.periodMs + " ms, "
+                    + IN_PROCESS);
         } else {
             say.accept("roqme provider: not run (the estimates come from elsewhere)");
         }
@@ -150,8 +155,8 @@ public final class RobotSide implements AutoCloseable {
             BridgeConfig c = options.bridge;
             Bridge bridge;
             try {
-                bridge = new Bridge(c, new IhmcTransport(c.domain(), c.name(), c.interfaces(), c.types()), ep.busIn(), ep.busOut(),
-                        ep.skill(), options.bridgeStatusMs).start();
+                bridge = new Bridge(c, new IhmcTransport(c.domain(), c.name(), c.interfaces(), c.types()), local, ep.skill(),
+                        options.bridgeStatusMs).start();
             } catch (DdsException | RuntimeException e) {
                 throw new StartException("dds-bridge: " + e.getMessage());
             }
@@ -159,7 +164,7 @@ public final class RobotSide implements AutoCloseable {
             say.accept("dds-bridge: domain " + c.domain() + ", " + c.contexts().size() + " context topics, "
                     + c.decisions().size() + " decision topics, " + c.estimates().size() + " estimate topics"
                     + (c.answersParameters() ? ", change-parameter answered on " + ep.skill() : "")
-                    + ", bus " + ep.busIn() + " / " + ep.busOut());
+                    + ", " + IN_PROCESS);
         }
         running.remove(engine);
         running.push(engine);
@@ -168,8 +173,8 @@ public final class RobotSide implements AutoCloseable {
         } catch (EngineStartException e) {
             throw new StartException("engine: " + e.getMessage());
         }
-        say.accept("engine: model " + engine.model().model() + ", backend " + engine.backendName() + ", bus " + ep.busIn()
-                + " / " + ep.busOut() + ", requests " + ep.request()
+        say.accept("engine: model " + engine.model().model() + ", backend " + engine.backendName() + ", " + IN_PROCESS
+                + ", requests " + ep.request()
                 + (eo.decisionLog == null ? "" : ", decision log " + eo.decisionLog));
     }
 

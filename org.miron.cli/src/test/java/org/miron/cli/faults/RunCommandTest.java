@@ -51,6 +51,27 @@ public class RunCommandTest {
         return Integer.parseInt(m.group(1));
     }
 
+    /** Established loopback TCP connections to the endpoint's port, from /proc/net/tcp (IPv4 and IPv6). */
+    private static int connectionsTo(String endpoint) throws java.io.IOException {
+        int port = URI.create(endpoint.replace("tcp://", "http://")).getPort();
+        int n = 0;
+        for (String table : List.of("/proc/net/tcp", "/proc/net/tcp6")) {
+            Path f = Path.of(table);
+            if (!Files.exists(f)) {
+                continue;
+            }
+            for (String line : Files.readAllLines(f)) {
+                String[] c = line.trim().split("\\s+");
+                // sl local_address rem_address st ...: the remote side is the broker's port, st 01 is ESTABLISHED
+                if (c.length > 3 && c[2].contains(":") && c[3].equals("01")
+                        && Integer.parseInt(c[2].substring(c[2].indexOf(':') + 1), 16) == port) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+
     private static String context(String name, String type, Object value) {
         return "{\"name\":\"" + name + "\",\"namespace\":\"Intralogistics\",\"type\":\"" + type + "\",\"value\":" + value + "}";
     }
@@ -63,9 +84,14 @@ public class RunCommandTest {
             String out = p.output();
             for (String line : new String[] { "miron run: broker: requests " + ep.request() + " -> skill interface " + ep.skill()
                     + ", bus " + ep.busIn() + " -> " + ep.busOut(), "miron run: requirements: 5 monitored",
-                    "miron run: roqme provider: model intralogistics", "miron run: engine: model intralogistics, backend native" }) {
+                    "miron run: roqme provider: model intralogistics", "miron run: engine: model intralogistics, backend native, "
+                            + "bus in process (no sockets to the broker)" }) {
                 assertTrue(line + " in:\n" + out, out.contains(line));
             }
+            // The provider, the monitors and the engine are running and reach the broker without
+            // sockets: nothing is connected to its bus ports yet (separate components would hold
+            // four connections to bus-in and three to bus-out).
+            assertEquals(out, 0, connectionsTo(ep.busIn()) + connectionsTo(ep.busOut()));
             try (BusProbe probe = new BusProbe(ep.busOut(), "roqme.", "miron.");
                     BusClient robot = new BusClient("test-robot", ep.busIn(), null, List.of(), (t, b) -> { }).start()) {
                 assertTrue(robot.awaitReady(TIMEOUT));

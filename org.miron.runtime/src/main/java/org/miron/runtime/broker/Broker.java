@@ -5,12 +5,14 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.logging.Logger;
 import org.miron.runtime.Endpoints;
+import org.miron.runtime.bus.BusLink;
 import org.zeromq.ZContext;
 
 /**
  * The MIRoN broker: the request path to the skill interface and the publish/subscribe bus with
  * its last-value cache, each on its own thread. Binds in {@link #start()} so a busy port fails
- * the caller instead of a background thread.
+ * the caller instead of a background thread. Components in the same process connect through
+ * {@link #local()} rather than sockets.
  */
 public final class Broker implements AutoCloseable {
     private static final Logger LOG = Logger.getLogger(Broker.class.getName());
@@ -70,6 +72,17 @@ public final class Broker implements AutoCloseable {
         LOG.info("broker: requests " + endpoints.request() + " -> " + endpoints.skill()
                 + ", bus " + endpoints.busIn() + " -> " + endpoints.busOut());
         return this;
+    }
+
+    /**
+     * Bus connections for components in this process: no sockets between them and the broker,
+     * the same topics, bodies, order and cache replay (see {@link LocalBus}). After {@link #start}.
+     */
+    public BusLink local() {
+        if (bus == null) {
+            throw new IllegalStateException("broker not started");
+        }
+        return (name, subscriptions, handler) -> new LocalBus(bus, name, subscriptions, handler);
     }
 
     /** Number of topics held by the last-value cache (diagnostics, tests). */

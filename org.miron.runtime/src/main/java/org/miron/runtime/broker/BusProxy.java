@@ -5,11 +5,16 @@ import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Queue;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.miron.runtime.Bind;
 import org.miron.runtime.SocketWait;
 import org.miron.runtime.bus.Topics;
+import org.miron.runtime.bus.Wakeup;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -36,6 +41,12 @@ import org.zeromq.ZFrame;
  * topic: subscriptions of one connection are handled in order, so a client that subscribes to a
  * fresh sync topic once connected knows, when the answer arrives, that the replay of all its
  * earlier prefixes has been delivered before it.
+ *
+ * <p>Local links ({@link LocalBus}): components in the broker's process hand their messages to
+ * this thread through a queue and a {@link Wakeup}, and are handed theirs by it. A local message
+ * is cached and sent on the XPUB like one read from the XSUB, and every message, from either side,
+ * goes to the local subscribers at the point it goes to the XPUB: one order for everybody. A local
+ * subscriber gets the cache replay once, at attach, in update order, then its sync.
  */
 final class BusProxy implements Runnable {
     private static final Logger LOG = Logger.getLogger(BusProxy.class.getName());
@@ -50,6 +61,15 @@ final class BusProxy implements Runnable {
     private ZMQ.Socket xpub;
     private volatile boolean running = true;
     private final AtomicLong refused = new AtomicLong();
+    private record LocalPublish(LocalBus from, List<byte[]> frames) {
+    }
+    private static final int LOCAL_QUEUE_LIMIT = 10_000;
+    private final BlockingQueue<LocalPublish> localOut = new ArrayBlockingQueue<>(LOCAL_QUEUE_LIMIT);
+    private final Queue<LocalBus> attaching = new ConcurrentLinkedQueue<>();
+    private final Queue<LocalBus> detaching = new ConcurrentLinkedQueue<>();
+    private final AtomicLong localDropped = new AtomicLong();
+    private final Wakeup wakeup = new Wakeup();
+    private final List<LocalBus> locals = new ArrayList<>(); // bus thread only
 
     BusProxy(ZContext ctx, String inEndpoint, String outEndpoint, LastValueCache cache) {
         this.ctx = ctx;
@@ -86,22 +106,50 @@ final class BusProxy implements Runnable {
 
     void stop() {
         running = false;
+        wakeup.signal();
+    }
+
+    /** Any thread: a local link's message, for this thread to cache, forward and deliver. */
+    void submit(LocalBus from, List<byte[]> frames) {
+        LocalPublish p = new LocalPublish(from, frames);
+        while (!localOut.offer(p)) {
+            LocalPublish old = localOut.poll(); // only when this thread is stuck: drop the oldest, as BusClient does
+            if (old != null) {
+                old.from().taken();
+                if (localDropped.incrementAndGet() % 1000 == 1) {
+                    LOG.warning("bus: local messages not taken, dropping the oldest (" + localDropped.get() + " so far)");
+                }
+            }
+        }
+        wakeup.signal();
+    }
+
+    /** Any thread: attach a local link (its replay and sync follow on this thread). */
+    void attach(LocalBus bus) {
+        attaching.add(bus);
+        wakeup.signal();
+    }
+
+    void detach(LocalBus bus) {
+        detaching.add(bus);
+        wakeup.signal();
     }
 
     @Override
     public void run() {
-        try (SocketWait poller = new SocketWait().add(xsub).add(xpub)) {
+        try (SocketWait poller = new SocketWait().add(xsub).add(xpub).add(wakeup.channel())) {
             while (running && !Thread.currentThread().isInterrupted()) {
                 boolean ready = poller.await(50);
+                boolean woken = wakeup.clear(); // before reading the queues: a later submit wakes the next poll
                 boolean idle = true;
                 // The poll only paces the loop; non-blocking reads decide. A wake-up the poller
                 // misses then costs at most one poll interval, never a stuck message.
                 boolean busy = true;
                 while (busy && running) {
-                    busy = forward() | subscription();
+                    busy = forward() | subscription() | local();
                     idle &= !busy;
                 }
-                if (ready && idle) {
+                if (ready && !woken && idle) {
                     poller.idle(); // a wake-up with nothing to do: see SocketWait
                 }
             }
@@ -109,6 +157,8 @@ final class BusProxy implements Runnable {
             if (running) {
                 LOG.severe("bus proxy stopped: " + e);
             }
+        } finally {
+            wakeup.close();
         }
     }
 
@@ -127,7 +177,55 @@ final class BusProxy implements Runnable {
                     + " (" + refused.get() + " refused so far)");
         }
         send(xpub, frames);
+        deliver(frames);
         return true;
+    }
+
+    /** Attaches, then forwards what the local links published, then detaches; true if there was any. */
+    private boolean local() {
+        boolean any = false;
+        LocalBus bus;
+        while ((bus = attaching.poll()) != null) {
+            any = true;
+            locals.add(bus);
+            for (List<byte[]> frames : cache.matching(bus::wants)) {
+                bus.offer(frames.get(0), body(frames));
+            }
+            bus.replayed(epoch);
+        }
+        for (int n = 0; n < LOCAL_QUEUE_LIMIT; n++) { // bounded: the sockets get their turn
+            LocalPublish p = localOut.poll();
+            if (p == null) {
+                break;
+            }
+            any = true;
+            p.from().taken();
+            if (!cache.put(p.frames()) && refused.incrementAndGet() % 1000 == 1) {
+                LOG.warning("bus: not caching an invalid message on " + new String(p.frames().get(0), StandardCharsets.UTF_8)
+                        + " from " + p.from() + " (" + refused.get() + " refused so far)");
+            }
+            send(xpub, p.frames());
+            deliver(p.frames());
+        }
+        while ((bus = detaching.poll()) != null) {
+            any = true;
+            locals.remove(bus);
+        }
+        return any;
+    }
+
+    /** To every local subscriber of the topic. */
+    private void deliver(List<byte[]> frames) {
+        byte[] topic = frames.get(0);
+        for (LocalBus bus : locals) {
+            if (bus.wants(topic)) {
+                bus.offer(topic, body(frames));
+            }
+        }
+    }
+
+    private static byte[] body(List<byte[]> frames) {
+        return frames.size() > 1 ? frames.get(1) : new byte[0];
     }
 
     private boolean subscription() {

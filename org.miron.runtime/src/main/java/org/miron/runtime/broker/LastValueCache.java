@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Predicate;
 import org.miron.runtime.Json;
 
 /**
@@ -64,12 +65,17 @@ public final class LastValueCache {
     }
 
     /** Latest messages whose topic starts with the (byte) prefix, oldest update first. */
-    public synchronized List<List<byte[]>> matching(byte[] prefix) {
+    public List<List<byte[]>> matching(byte[] prefix) {
         String p = new String(prefix, StandardCharsets.ISO_8859_1);
+        return matching(topic -> new String(topic, StandardCharsets.ISO_8859_1).startsWith(p));
+    }
+
+    /** Latest messages whose topic passes the test, oldest update first (each once). */
+    public synchronized List<List<byte[]>> matching(Predicate<byte[]> topic) {
         List<List<byte[]>> out = new ArrayList<>();
-        for (Map.Entry<String, List<byte[]>> e : last.entrySet()) {
-            if (new String(e.getValue().get(0), StandardCharsets.ISO_8859_1).startsWith(p)) {
-                out.add(e.getValue());
+        for (List<byte[]> frames : last.values()) {
+            if (topic.test(frames.get(0))) {
+                out.add(frames);
             }
         }
         return out;

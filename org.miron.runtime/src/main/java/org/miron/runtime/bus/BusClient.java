@@ -38,17 +38,7 @@ import org.zeromq.ZMQ;
  * to a fresh {@code miron.broker.sync.<id>} topic and reports when the broker answers it, which is
  * after the last-value cache replay of every other subscribed prefix (see BusProxy).
  */
-public final class BusClient implements AutoCloseable {
-    /** Receives one bus message: topic and body (the second frame, empty if absent). */
-    public interface Handler {
-        void onMessage(String topic, byte[] body);
-    }
-
-    /** Called on the bus thread once the replay of a broker epoch is complete; {@code first}: the first epoch seen. */
-    public interface SyncListener {
-        void synced(String epoch, boolean first);
-    }
-
+public final class BusClient implements Bus {
     private static final Logger LOG = Logger.getLogger(BusClient.class.getName());
     private static final int QUEUE_LIMIT = 10_000;
 
@@ -56,7 +46,7 @@ public final class BusClient implements AutoCloseable {
     private final String publishEndpoint;
     private final String subscribeEndpoint;
     private final List<String> subscriptions;
-    private final Handler handler;
+    private final Bus.Handler handler;
     private final ZContext ctx = Contexts.create();
     private final BlockingQueue<String[]> outbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
     private final CountDownLatch ready = new CountDownLatch(1);
@@ -67,7 +57,7 @@ public final class BusClient implements AutoCloseable {
     private volatile boolean running = true;
     private volatile boolean sending;
     private final Map<String, String[]> retained = new LinkedHashMap<>(); // guarded by itself
-    private SyncListener syncListener;
+    private Bus.SyncListener syncListener;
     private final String syncId = Long.toHexString(System.nanoTime()) + Integer.toHexString(System.identityHashCode(this));
     private String epoch; // bus thread only
     private String syncTopic; // bus thread only
@@ -83,7 +73,7 @@ public final class BusClient implements AutoCloseable {
      * @param subscriptions     topic prefixes
      */
     public BusClient(String name, String publishEndpoint, String subscribeEndpoint,
-            List<String> subscriptions, Handler handler) {
+            List<String> subscriptions, Bus.Handler handler) {
         this.name = name;
         this.publishEndpoint = publishEndpoint;
         this.subscribeEndpoint = subscribeEndpoint;
@@ -93,8 +83,9 @@ public final class BusClient implements AutoCloseable {
         this.thread.setDaemon(true);
     }
 
-    /** Follows the broker's epochs and replay (see the class comment); call before {@link #start}. */
-    public BusClient onBrokerSync(SyncListener listener) {
+    /** Follows the broker's epochs and replay (see the class comment), on the bus thread; call before {@link #start}. */
+    @Override
+    public BusClient onBrokerSync(Bus.SyncListener listener) {
         this.syncListener = listener;
         return this;
     }
@@ -109,12 +100,14 @@ public final class BusClient implements AutoCloseable {
         return this;
     }
 
+    @Override
     public BusClient start() {
         thread.start();
         return this;
     }
 
     /** Queues a two-frame message; drops the oldest queued one when the broker is unreachable long. */
+    @Override
     public void publish(String topic, String body) {
         String[] msg = {topic, body};
         while (!outbox.offer(msg)) {
@@ -129,6 +122,7 @@ public final class BusClient implements AutoCloseable {
      * Publishes and remembers the message as the current value of {@code key}; after a broker
      * restart the last message of every key is published again.
      */
+    @Override
     public void publishRetained(String key, String topic, String body) {
         synchronized (retained) {
             retained.remove(key); // re-insert: re-announced in update order
@@ -138,11 +132,13 @@ public final class BusClient implements AutoCloseable {
     }
 
     /** Waits until the broker has subscribed to our output. */
+    @Override
     public boolean awaitReady(long timeoutMs) throws InterruptedException {
         return ready.await(timeoutMs, TimeUnit.MILLISECONDS);
     }
 
     /** Waits until every queued message has been handed to ZeroMQ. */
+    @Override
     public boolean flush(long timeoutMs) throws InterruptedException {
         long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
         while (!outbox.isEmpty() || sending) {

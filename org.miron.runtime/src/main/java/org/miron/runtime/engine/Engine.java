@@ -9,7 +9,8 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
-import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Bus;
+import org.miron.runtime.bus.BusLink;
 import org.miron.runtime.bus.Topics;
 
 /**
@@ -28,7 +29,7 @@ public final class Engine implements AutoCloseable {
     private final EngineStatus status;
     private final Decider decider; // solve thread only
     private volatile Map<String, Object> appliedValues = Map.of();
-    private BusClient bus;
+    private Bus bus;
     private ParameterSender sender;
     private DecisionLog log;
     private Thread loop;
@@ -78,8 +79,9 @@ public final class Engine implements AutoCloseable {
             }
         }
         running = true;
-        bus = new BusClient("engine", options.busIn, options.busOut,
-                List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).onBrokerSync(this::onBrokerSync).start();
+        BusLink link = options.bus != null ? options.bus : BusLink.sockets(options.busIn, options.busOut);
+        bus = link.open("engine", List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).onBrokerSync(this::onBrokerSync)
+                .start();
         sender = new ParameterSender(options.request, options.ackTimeoutMs, options.backoffMinMs,
                 options.backoffMaxMs, new SenderReports()).start();
         loop = new Thread(this::solveLoop, "engine-solve");

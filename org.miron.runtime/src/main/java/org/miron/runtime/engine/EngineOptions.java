@@ -2,12 +2,15 @@ package org.miron.runtime.engine;
 
 import java.nio.file.Path;
 import org.miron.runtime.Endpoints;
+import org.miron.runtime.bus.BusLink;
 
 /** Engine settings; defaults are the MIRoN loopback endpoints and the native backend. */
 public final class EngineOptions {
     public Path ioJson;
     public String busIn = Endpoints.DEFAULT_BUS_IN;
     public String busOut = Endpoints.DEFAULT_BUS_OUT;
+    /** Null: sockets to {@link #busIn} / {@link #busOut}; a broker's {@code local()} in its process. */
+    public BusLink bus;
     public String request = Endpoints.DEFAULT_REQUEST;
     /** Null: native, or minizinc for an io.json without decision section ({@link Backends#create}). */
     public String backend;

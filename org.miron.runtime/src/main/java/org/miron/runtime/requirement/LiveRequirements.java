@@ -19,7 +19,8 @@ import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
-import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Bus;
+import org.miron.runtime.bus.BusLink;
 import org.miron.runtime.bus.Topics;
 
 /**
@@ -44,7 +45,7 @@ public final class LiveRequirements implements AutoCloseable {
     private final RequirementModel model;
     private final RequirementMonitors monitors;
     private final RequirementTally tally;
-    private final BusClient bus;
+    private final Bus bus;
     private final Thread thread;
     private final BlockingQueue<Arrival> inbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
     private final CountDownLatch subscribed = new CountDownLatch(1);
@@ -65,12 +66,17 @@ public final class LiveRequirements implements AutoCloseable {
 
     /** Compiles the model's formulas (an IllegalArgumentException names one the monitors cannot run). */
     public LiveRequirements(RequirementModel model, String busIn, String busOut) {
+        this(model, BusLink.sockets(busIn, busOut));
+    }
+
+    /** The same, on a given bus link: sockets, or a broker's {@code local()} in this process. */
+    public LiveRequirements(RequirementModel model, BusLink link) {
         this.model = model;
         this.monitors = new RequirementMonitors(model);
         this.tally = new RequirementTally(model);
         long origin = System.nanoTime();
         this.clock = () -> (System.nanoTime() - origin) / 1_000_000;
-        this.bus = new BusClient("requirements", busIn, busOut, List.of(Topics.CONTEXT, Topics.ESTIMATE, Topics.DECISION),
+        this.bus = link.open("requirements", List.of(Topics.CONTEXT, Topics.ESTIMATE, Topics.DECISION),
                 this::arrived).onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "requirement-monitors");
         this.thread.setDaemon(true);

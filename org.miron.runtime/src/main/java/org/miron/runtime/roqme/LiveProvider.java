@@ -14,7 +14,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 import java.util.logging.Logger;
 import org.miron.runtime.Json;
-import org.miron.runtime.bus.BusClient;
+import org.miron.runtime.bus.Bus;
+import org.miron.runtime.bus.BusLink;
 import org.miron.runtime.bus.ContextMessage;
 import org.miron.runtime.bus.Topics;
 import org.miron.runtime.roqme.expr.CompiledModel;
@@ -47,7 +48,7 @@ public final class LiveProvider implements AutoCloseable {
     private final BlockingQueue<Arrival> inbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
     private final ProviderStatus status = new ProviderStatus();
     private final ContextDecoder decoder;
-    private final BusClient bus;
+    private final Bus bus;
     private final Thread thread;
     private final CountDownLatch stopped = new CountDownLatch(1);
     private final CountDownLatch subscribed = new CountDownLatch(1);
@@ -72,6 +73,11 @@ public final class LiveProvider implements AutoCloseable {
     private volatile long fired;
 
     public LiveProvider(CompiledModel model, long periodMs, long statusIntervalMs, String busIn, String busOut) {
+        this(model, periodMs, statusIntervalMs, BusLink.sockets(busIn, busOut));
+    }
+
+    /** @param link the bus: sockets, or a broker's {@code local()} in this process */
+    public LiveProvider(CompiledModel model, long periodMs, long statusIntervalMs, BusLink link) {
         if (periodMs <= 0) {
             throw new IllegalArgumentException("the period must be positive, got " + periodMs);
         }
@@ -82,7 +88,7 @@ public final class LiveProvider implements AutoCloseable {
         this.derived = model.model().contexts().stream()
                 .filter(v -> v.derived() != null && !v.derived().isNull() && !"eventtype".equals(v.type().kind()))
                 .toList();
-        this.bus = new BusClient("roqme", busIn, busOut, List.of(Topics.CONTEXT), this::arrived)
+        this.bus = link.open("roqme", List.of(Topics.CONTEXT), this::arrived)
                 .onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "roqme-provider");
     }
