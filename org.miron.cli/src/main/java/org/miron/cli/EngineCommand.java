@@ -2,7 +2,6 @@ package org.miron.cli;
 
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
-import org.miron.runtime.Endpoints;
 import org.miron.runtime.engine.Engine;
 import org.miron.runtime.engine.EngineOptions;
 import org.miron.runtime.engine.EngineStartException;
@@ -19,22 +18,8 @@ public final class EngineCommand implements Callable<Integer> {
     @Option(names = "--io", required = true, paramLabel = "FILE", description = "the generated name.io.json")
     Path io;
 
-    @Option(names = "--backend", description = "solver backend: native (in process), minizinc (the reference) or both "
-            + "(cross-check every decision) (default: native; minizinc for an io.json without decision section)")
-    String backend;
-
-    @Option(names = "--minizinc", paramLabel = "PATH", description = "MiniZinc executable (default: ${DEFAULT-VALUE})")
-    String minizinc = "minizinc";
-
-    @Option(names = "--solver", description = "MiniZinc solver (default: ${DEFAULT-VALUE})")
-    String solver = "gecode";
-
-    @Option(names = "--time-limit", paramLabel = "MS", description = "solver time limit in ms, flattening included; 0: 2000 + 25 per varpoint (default: ${DEFAULT-VALUE})")
-    long timeLimit = 0;
-
-    @Option(names = "--decision-log", paramLabel = "FILE",
-            description = "append-only JSON-lines decision log (default: ${DEFAULT-VALUE})")
-    Path decisionLog = Path.of("miron-decisions.jsonl");
+    @Mixin
+    EngineSolving solving = new EngineSolving();
 
     @Option(names = "--status-interval", paramLabel = "MS",
             description = "re-publish miron.status at least this often (default: ${DEFAULT-VALUE})")
@@ -51,12 +36,7 @@ public final class EngineCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        EngineOptions o = new EngineOptions(io);
-        o.backend = backend;
-        o.minizinc = minizinc;
-        o.solver = solver;
-        o.timeLimitMs = timeLimit;
-        o.decisionLog = decisionLog;
+        EngineOptions o = solving.applyTo(new EngineOptions(io));
         o.statusIntervalMs = statusInterval;
         o.busIn = busIn.endpoint;
         o.busOut = busOut.endpoint;

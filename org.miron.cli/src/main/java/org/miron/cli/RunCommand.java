@@ -14,7 +14,6 @@ import org.miron.dds.config.ConfigException;
 import org.miron.dds.config.ConfigReader;
 import org.miron.dds.transport.IhmcTransport;
 import org.miron.dds.types.DefinitionException;
-import org.miron.runtime.Endpoints;
 import org.miron.runtime.engine.EngineOptions;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -45,20 +44,7 @@ public final class RunCommand implements Callable<Integer> {
     Path model;
 
     @Mixin
-    BrokerEndpoints.Request request = new BrokerEndpoints.Request();
-
-    @Option(names = "--skill", description = "skill interface REP the broker's DEALER connects to (default: ${DEFAULT-VALUE})")
-    String skill = Endpoints.DEFAULT_SKILL;
-
-    @Mixin
-    BrokerEndpoints.BusIn busIn = new BrokerEndpoints.BusIn();
-
-    @Mixin
-    BrokerEndpoints.BusOut busOut = new BrokerEndpoints.BusOut();
-
-    @Option(names = "--cache-file", paramLabel = "FILE",
-            description = "snapshot of the broker's last-value cache, written every 0.5 s when it changed and reloaded on start")
-    Path cacheFile;
+    BrokerSetup broker = new BrokerSetup();
 
     @Option(names = "--no-provider", description = "do not run the RoQME provider: the estimates come from elsewhere "
             + "(the original RoQME provider, or `miron roqme run` on another host)")
@@ -70,22 +56,8 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--param", paramLabel = "NAME=VALUE", description = "overrides a RoQME param's default (repeatable)")
     Map<String, String> params = new LinkedHashMap<>();
 
-    @Option(names = "--backend", description = "the engine's solver backend: native (in process), minizinc (the reference) "
-            + "or both (cross-check every decision) (default: native)")
-    String backend;
-
-    @Option(names = "--minizinc", paramLabel = "PATH", description = "MiniZinc executable (default: ${DEFAULT-VALUE})")
-    String minizinc = "minizinc";
-
-    @Option(names = "--solver", description = "MiniZinc solver (default: ${DEFAULT-VALUE})")
-    String solver = "gecode";
-
-    @Option(names = "--time-limit", paramLabel = "MS", description = "solver time limit in ms; 0: 2000 + 25 per varpoint (default: ${DEFAULT-VALUE})")
-    long timeLimit = 0;
-
-    @Option(names = "--decision-log", paramLabel = "FILE",
-            description = "the engine's append-only JSON-lines decision log (default: ${DEFAULT-VALUE})")
-    Path decisionLog = Path.of("miron-decisions.jsonl");
+    @Mixin
+    EngineSolving solving = new EngineSolving();
 
     @Option(names = "--status-interval", paramLabel = "MS",
             description = "re-publish each component's status at least this often (default: ${DEFAULT-VALUE})")
@@ -123,18 +95,13 @@ public final class RunCommand implements Callable<Integer> {
             return fail(err, e.getMessage(), e.status());
         }
         RobotSide.Options o = new RobotSide.Options();
-        o.endpoints = new Endpoints(request.endpoint, skill, Endpoints.DEFAULT_SKILL_EVENTS, busIn.endpoint, busOut.endpoint);
-        o.cacheFile = cacheFile;
+        o.endpoints = broker.endpoints();
+        o.cacheFile = broker.cacheFile;
         o.periodMs = period;
         o.providerStatusMs = statusInterval;
         o.bridge = bridge;
         o.bridgeStatusMs = statusInterval;
-        o.engine = new EngineOptions(generated.ioJson());
-        o.engine.backend = backend;
-        o.engine.minizinc = minizinc;
-        o.engine.solver = solver;
-        o.engine.timeLimitMs = timeLimit;
-        o.engine.decisionLog = decisionLog;
+        o.engine = solving.applyTo(new EngineOptions(generated.ioJson()));
         o.engine.statusIntervalMs = statusInterval;
         RobotSide side = new RobotSide(generated, o).onStarted(RobotSide.printer(out, "miron run: "))
                 .onRequirement(e -> {
