@@ -136,6 +136,65 @@ public class RunCommandTest {
         }
     }
 
+    /**
+     * Inside the one process each component still counts and drops what it cannot read: a
+     * malformed estimate (engine, monitors) and a malformed context (provider, monitors) are
+     * counted on their statuses, the process lives, and the next good estimate decides.
+     */
+    @Test
+    public void malformedMessagesAreCountedByEachComponentAndDropped() throws Exception {
+        try (RuntimeProcess p = RuntimeProcess.start(tmp.getRoot().toPath(), "run", args("--period", "200",
+                "--status-interval", "200"))) {
+            assertTrue(p.output(), p.awaitOutput("miron run: running intralogistics.miron", TIMEOUT));
+            try (BusProbe probe = new BusProbe(ep.busOut(), "roqme.status", "miron.");
+                    BusClient robot = new BusClient("test-robot", ep.busIn(), null, List.of(), (t, b) -> { }).start()) {
+                assertTrue(robot.awaitReady(TIMEOUT));
+                assertNotNull(probe.await(Topics.VARIANT_PREFIX + "task", b -> true, TIMEOUT));
+                robot.publish(Topics.ESTIMATE, "{\"name\":\"power_autonomy\",\"value\":");
+                robot.publish(Topics.CONTEXT, "{\"name\":");
+                assertNotNull("engine:\n" + p.output(), probe.await(Topics.STATUS,
+                        b -> b.path("counters").path("malformedInput").asLong() >= 1, TIMEOUT));
+                assertNotNull("provider:\n" + p.output(), probe.await(Topics.ROQME_STATUS,
+                        b -> b.path("counters").path("malformedInput").asLong() >= 1, TIMEOUT));
+                assertNotNull("monitors:\n" + p.output(), probe.await(Topics.REQUIREMENT_STATUS,
+                        b -> b.path("counters").path("badBusInput").asLong() >= 2, TIMEOUT));
+                JsonNode dock = null;
+                for (long end = System.currentTimeMillis() + TIMEOUT; dock == null && System.currentTimeMillis() < end;) {
+                    robot.publish(Topics.ESTIMATE, "{\"name\":\"power_autonomy\",\"namespace\":\"Intralogistics\",\"value\":0.05}");
+                    dock = probe.await(Topics.VARIANT_PREFIX + "task", b -> b.path("value").asText().equals("dock"), 300);
+                }
+                assertNotNull("a good estimate still decides:\n" + p.output(), dock);
+                assertTrue(p.output(), p.isAlive());
+            }
+            assertEquals(p.output(), documentedSigterm(), p.terminate(TIMEOUT));
+        }
+    }
+
+    /** A solver that fails is retried inside the one process as in the separate engine: the status counts it, a decision follows. */
+    @Test
+    public void aFailingSolverIsRetried() throws Exception {
+        Path dir = tmp.getRoot().toPath();
+        Path marker = dir.resolve("failed-once");
+        Path flaky = dir.resolve("flaky-minizinc");
+        Files.writeString(flaky, "#!/bin/sh\n"
+                + "# fails the first solve, then is the real minizinc\n"
+                + "case \"$*\" in *--version*) exec minizinc \"$@\";; esac\n"
+                + "if [ ! -e '" + marker + "' ]; then touch '" + marker + "'; echo 'solver crashed' >&2; exit 1; fi\n"
+                + "exec minizinc \"$@\"\n");
+        assertTrue(flaky.toFile().setExecutable(true));
+        try (RuntimeProcess p = RuntimeProcess.start(dir, "run", args("--no-provider", "--backend", "minizinc",
+                "--minizinc", flaky.toString()))) {
+            assertTrue(p.output(), p.awaitOutput("miron run: running intralogistics.miron", TIMEOUT));
+            try (BusProbe probe = new BusProbe(ep.busOut(), "miron.")) {
+                assertNotNull("a retry after the failed solve:\n" + p.output(), probe.await(Topics.STATUS,
+                        b -> b.path("counters").path("solveRetries").asLong() >= 1, TIMEOUT));
+                assertNotNull("then a decision:\n" + p.output(), probe.await(Topics.DECISION, b -> true, TIMEOUT));
+                assertTrue(Files.exists(marker));
+            }
+            assertEquals(p.output(), documentedSigterm(), p.terminate(TIMEOUT));
+        }
+    }
+
     @Test
     public void aBusyEndpointIsExit2NamingItAndNothingRuns() throws Exception {
         int port = URI.create(ep.busOut().replace("tcp://", "http://")).getPort();
