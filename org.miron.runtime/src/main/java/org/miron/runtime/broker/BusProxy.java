@@ -5,16 +5,11 @@ import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Queue;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import org.miron.runtime.Bind;
 import org.miron.runtime.SocketWait;
 import org.miron.runtime.bus.Topics;
-import org.miron.runtime.bus.Wakeup;
 import org.zeromq.SocketType;
 import org.zeromq.ZContext;
 import org.zeromq.ZMQ;
@@ -42,11 +37,18 @@ import org.zeromq.ZFrame;
  * fresh sync topic once connected knows, when the answer arrives, that the replay of all its
  * earlier prefixes has been delivered before it.
  *
- * <p>Local links ({@link LocalBus}): components in the broker's process hand their messages to
- * this thread through a queue and a {@link Wakeup}, and are handed theirs by it. A local message
- * is cached and sent on the XPUB like one read from the XSUB, and every message, from either side,
- * goes to the local subscribers at the point it goes to the XPUB: one order for everybody. A local
- * subscriber gets the cache replay once, at attach, in update order, then its sync.
+ * <p>Local links ({@link LocalBus}): a component in the broker's process publishes on its own
+ * thread, which caches the message and sends it on the XPUB as this thread does a message read
+ * from the XSUB, with no hand-over to this thread (each one costs a wake-up, the tail of the
+ * loop's latency). Every message, from either side, goes to the local subscribers where it goes to
+ * the XPUB. All of that happens under one lock, so there is one order for everybody. The XPUB is
+ * a ZeroMQ socket used by several threads this way: only under the lock (which is also the memory
+ * barrier ZeroMQ asks for when a socket changes threads), and whoever sent on it last reads its
+ * pending subscriptions before letting go, since the send may have taken their wake-up from this
+ * thread's poll (see SocketWait). A local subscriber gets the cache replay once, at attach, in
+ * update order, then its sync. A quick handler ({@link org.miron.runtime.bus.Bus.QuickHandler}) runs
+ * right there, under the lock; what it publishes goes out after the message it was handed, to
+ * everybody, so the one order holds.
  */
 final class BusProxy implements Runnable {
     private static final Logger LOG = Logger.getLogger(BusProxy.class.getName());
@@ -61,15 +63,12 @@ final class BusProxy implements Runnable {
     private ZMQ.Socket xpub;
     private volatile boolean running = true;
     private final AtomicLong refused = new AtomicLong();
-    private record LocalPublish(LocalBus from, List<byte[]> frames) {
-    }
-    private static final int LOCAL_QUEUE_LIMIT = 10_000;
-    private final BlockingQueue<LocalPublish> localOut = new ArrayBlockingQueue<>(LOCAL_QUEUE_LIMIT);
-    private final Queue<LocalBus> attaching = new ConcurrentLinkedQueue<>();
-    private final Queue<LocalBus> detaching = new ConcurrentLinkedQueue<>();
-    private final AtomicLong localDropped = new AtomicLong();
-    private final Wakeup wakeup = new Wakeup();
-    private final List<LocalBus> locals = new ArrayList<>(); // bus thread only
+    /** Guards the XPUB, the cache's order and {@link #locals}; held for one message at a time. */
+    private final Object lock = new Object();
+    private final List<LocalBus> locals = new ArrayList<>(); // under lock
+    private boolean open; // under lock: the sockets may be used
+    private boolean delivering; // under lock: handing a message to the local subscribers
+    private final java.util.ArrayDeque<List<byte[]>> nested = new java.util.ArrayDeque<>(); // under lock
 
     BusProxy(ZContext ctx, String inEndpoint, String outEndpoint, LastValueCache cache) {
         this.ctx = ctx;
@@ -89,6 +88,9 @@ final class BusProxy implements Runnable {
         Bind.bind(xpub, outEndpoint);
         xsub.send(new byte[] {1}); // subscribe to all topics; XSUB repeats it to every new publisher
         cache.put(List.of(Topics.BROKER_HELLO.getBytes(StandardCharsets.UTF_8), epochBody()));
+        synchronized (lock) {
+            open = true;
+        }
     }
 
     String epoch() {
@@ -106,50 +108,64 @@ final class BusProxy implements Runnable {
 
     void stop() {
         running = false;
-        wakeup.signal();
     }
 
-    /** Any thread: a local link's message, for this thread to cache, forward and deliver. */
-    void submit(LocalBus from, List<byte[]> frames) {
-        LocalPublish p = new LocalPublish(from, frames);
-        while (!localOut.offer(p)) {
-            LocalPublish old = localOut.poll(); // only when this thread is stuck: drop the oldest, as BusClient does
-            if (old != null) {
-                old.from().taken();
-                if (localDropped.incrementAndGet() % 1000 == 1) {
-                    LOG.warning("bus: local messages not taken, dropping the oldest (" + localDropped.get() + " so far)");
-                }
+    /** Any thread: a local link's message, cached, forwarded and delivered before this returns. */
+    void publish(LocalBus from, List<byte[]> frames) {
+        synchronized (lock) {
+            if (!open) {
+                return; // the broker has stopped: as a socket client's message to a broker that is gone
+            }
+            if (delivering) {
+                nested.add(frames); // a quick handler publishing: after the message it is handling
+                return;
+            }
+            dispatch(frames, from.toString());
+            while (subscription()) {
+                // ours to answer now: the send may have consumed their wake-up
             }
         }
-        wakeup.signal();
     }
 
-    /** Any thread: attach a local link (its replay and sync follow on this thread). */
+    /** Any thread: a local link attached, its cache replay and sync queued to it before this returns. */
     void attach(LocalBus bus) {
-        attaching.add(bus);
-        wakeup.signal();
+        synchronized (lock) {
+            locals.add(bus);
+            delivering = true;
+            try {
+                for (List<byte[]> frames : cache.matching(bus::wants)) {
+                    bus.offer(frames.get(0), body(frames));
+                }
+                bus.replayed(epoch);
+            } finally {
+                delivering = false;
+            }
+            drainNested();
+        }
     }
 
     void detach(LocalBus bus) {
-        detaching.add(bus);
-        wakeup.signal();
+        synchronized (lock) {
+            locals.remove(bus);
+        }
     }
 
     @Override
     public void run() {
-        try (SocketWait poller = new SocketWait().add(xsub).add(xpub).add(wakeup.channel())) {
+        try (SocketWait poller = new SocketWait().add(xsub).add(xpub)) {
             while (running && !Thread.currentThread().isInterrupted()) {
                 boolean ready = poller.await(50);
-                boolean woken = wakeup.clear(); // before reading the queues: a later submit wakes the next poll
                 boolean idle = true;
                 // The poll only paces the loop; non-blocking reads decide. A wake-up the poller
                 // misses then costs at most one poll interval, never a stuck message.
                 boolean busy = true;
                 while (busy && running) {
-                    busy = forward() | subscription() | local();
+                    synchronized (lock) {
+                        busy = forward() | subscription();
+                    }
                     idle &= !busy;
                 }
-                if (ready && !woken && idle) {
+                if (ready && idle) {
                     poller.idle(); // a wake-up with nothing to do: see SocketWait
                 }
             }
@@ -158,7 +174,9 @@ final class BusProxy implements Runnable {
                 LOG.severe("bus proxy stopped: " + e);
             }
         } finally {
-            wakeup.close();
+            synchronized (lock) {
+                open = false; // the broker closes the sockets next
+            }
         }
     }
 
@@ -171,56 +189,47 @@ final class BusProxy implements Runnable {
         for (ZFrame f : msg) {
             frames.add(f.getData());
         }
-        if (!cache.put(frames) && refused.incrementAndGet() % 1000 == 1) {
-            // forwarded all the same: subscribers count bad input themselves
-            LOG.warning("bus: not caching an invalid message on " + new String(frames.get(0), StandardCharsets.UTF_8)
-                    + " (" + refused.get() + " refused so far)");
-        }
-        send(xpub, frames);
-        deliver(frames);
+        dispatch(frames, null);
         return true;
     }
 
-    /** Attaches, then forwards what the local links published, then detaches; true if there was any. */
-    private boolean local() {
-        boolean any = false;
-        LocalBus bus;
-        while ((bus = attaching.poll()) != null) {
-            any = true;
-            locals.add(bus);
-            for (List<byte[]> frames : cache.matching(bus::wants)) {
-                bus.offer(frames.get(0), body(frames));
-            }
-            bus.replayed(epoch);
+    /** Caches, forwards and delivers one message, then what quick handlers published meanwhile. */
+    private void dispatch(List<byte[]> frames, String from) {
+        admit(frames, from);
+        send(xpub, frames);
+        deliver(frames);
+        drainNested();
+    }
+
+    private void drainNested() {
+        List<byte[]> next;
+        while (!delivering && (next = nested.poll()) != null) {
+            admit(next, null);
+            send(xpub, next);
+            deliver(next);
         }
-        for (int n = 0; n < LOCAL_QUEUE_LIMIT; n++) { // bounded: the sockets get their turn
-            LocalPublish p = localOut.poll();
-            if (p == null) {
-                break;
-            }
-            any = true;
-            p.from().taken();
-            if (!cache.put(p.frames()) && refused.incrementAndGet() % 1000 == 1) {
-                LOG.warning("bus: not caching an invalid message on " + new String(p.frames().get(0), StandardCharsets.UTF_8)
-                        + " from " + p.from() + " (" + refused.get() + " refused so far)");
-            }
-            send(xpub, p.frames());
-            deliver(p.frames());
+    }
+
+    /** Caches a valid message; an invalid one is forwarded all the same (subscribers count bad input themselves). */
+    private void admit(List<byte[]> frames, String from) {
+        if (!cache.put(frames) && refused.incrementAndGet() % 1000 == 1) {
+            LOG.warning("bus: not caching an invalid message on " + new String(frames.get(0), StandardCharsets.UTF_8)
+                    + (from == null ? "" : " from " + from) + " (" + refused.get() + " refused so far)");
         }
-        while ((bus = detaching.poll()) != null) {
-            any = true;
-            locals.remove(bus);
-        }
-        return any;
     }
 
     /** To every local subscriber of the topic. */
     private void deliver(List<byte[]> frames) {
         byte[] topic = frames.get(0);
-        for (LocalBus bus : locals) {
-            if (bus.wants(topic)) {
-                bus.offer(topic, body(frames));
+        delivering = true;
+        try {
+            for (LocalBus bus : locals) {
+                if (bus.wants(topic)) {
+                    bus.offer(topic, body(frames));
+                }
             }
+        } finally {
+            delivering = false;
         }
     }
 

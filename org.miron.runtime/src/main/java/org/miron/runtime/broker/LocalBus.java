@@ -12,11 +12,12 @@ import org.miron.runtime.bus.Bus;
 
 /**
  * A component's bus connection to a broker in the same process ({@link Broker#local()}): no
- * socket, no I/O thread. What it publishes is handed to the broker's bus thread, which caches
- * and forwards it exactly as a message from its XSUB, so external subscribers see the same wire;
- * what it subscribes to is handed to it by that thread in the broker's order, after a replay of
- * the last-value cache, and run on the connection's own delivery thread so that a slow handler
- * (a DDS write) holds neither the broker nor the other components.
+ * socket, no I/O thread. What it publishes the broker caches and forwards on the publishing
+ * thread, exactly as a message from its XSUB, so external subscribers see the same wire; what it
+ * subscribes to it gets in the broker's order, after a replay of the last-value cache, on the
+ * connection's own delivery thread, so that a slow handler (a DDS write) holds neither the broker
+ * nor the other components; a {@link Bus.QuickHandler} is run by the broker where it delivers,
+ * with no thread of its own.
  *
  * <p>The broker lives as long as the process, so there is one epoch and nothing to re-announce:
  * {@link #publishRetained} is {@link #publish}.
@@ -24,7 +25,6 @@ import org.miron.runtime.bus.Bus;
 final class LocalBus implements Bus {
     private static final Logger LOG = Logger.getLogger(LocalBus.class.getName());
     private static final int QUEUE_LIMIT = 10_000;
-    private static final long CLOSE_FLUSH_MS = 1000; // as a socket client's linger: the last outputs leave
 
     /** Something for the delivery thread: a message, or (topic null) the end of the replay. */
     private record Delivery(String topic, byte[] body) {
@@ -35,10 +35,9 @@ final class LocalBus implements Bus {
     private final List<byte[]> prefixes;
     private final Bus.Handler handler;
     private final BlockingQueue<Delivery> inbox = new ArrayBlockingQueue<>(QUEUE_LIMIT);
-    private final AtomicLong unsent = new AtomicLong(); // published, not yet taken by the broker
     private final AtomicLong dropped = new AtomicLong();
     private final CountDownLatch attached = new CountDownLatch(1);
-    private final Thread thread;
+    private final Thread thread; // null for a quick handler
     private volatile Bus.SyncListener syncListener;
     private volatile boolean running = true;
 
@@ -47,8 +46,12 @@ final class LocalBus implements Bus {
         this.name = name;
         this.prefixes = subscriptions.stream().map(s -> s.getBytes(StandardCharsets.UTF_8)).toList();
         this.handler = handler;
-        this.thread = new Thread(this::deliver, name + "-bus");
-        this.thread.setDaemon(true);
+        if (handler instanceof Bus.QuickHandler) {
+            this.thread = null;
+        } else {
+            this.thread = new Thread(this::deliver, name + "-bus");
+            this.thread.setDaemon(true);
+        }
     }
 
     @Override
@@ -59,15 +62,16 @@ final class LocalBus implements Bus {
 
     @Override
     public LocalBus start() {
-        thread.start();
+        if (thread != null) {
+            thread.start();
+        }
         broker.attach(this);
         return this;
     }
 
     @Override
     public void publish(String topic, String body) {
-        unsent.incrementAndGet();
-        broker.submit(this, List.of(topic.getBytes(StandardCharsets.UTF_8), body.getBytes(StandardCharsets.UTF_8)));
+        broker.publish(this, List.of(topic.getBytes(StandardCharsets.UTF_8), body.getBytes(StandardCharsets.UTF_8)));
     }
 
     @Override
@@ -81,19 +85,13 @@ final class LocalBus implements Bus {
         return attached.await(timeoutMs, TimeUnit.MILLISECONDS);
     }
 
+    /** Nothing waits: a publish has left when it returns. */
     @Override
-    public boolean flush(long timeoutMs) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        while (unsent.get() > 0) {
-            if (System.nanoTime() > end) {
-                return false;
-            }
-            Thread.sleep(1);
-        }
+    public boolean flush(long timeoutMs) {
         return true;
     }
 
-    // ---- the broker's bus thread ----
+    // ---- called by the broker, under its lock ----
 
     /** Whether a message on {@code topic} is for us (byte-wise prefix, as ZeroMQ matches). */
     boolean wants(byte[] topic) {
@@ -107,17 +105,17 @@ final class LocalBus implements Bus {
 
     /** A message for us; drops our oldest undelivered one when we are far behind (as a ZeroMQ HWM would). */
     void offer(byte[] topic, byte[] body) {
-        queue(new Delivery(new String(topic, StandardCharsets.UTF_8), body));
-    }
-
-    /** The broker took one of our messages. */
-    void taken() {
-        unsent.decrementAndGet();
+        Delivery d = new Delivery(topic == null ? null : new String(topic, StandardCharsets.UTF_8), body);
+        if (thread == null) {
+            handle(d);
+        } else {
+            queue(d);
+        }
     }
 
     /** The replay of the cache is delivered: tell the sync listener after it. */
     void replayed(String epoch) {
-        queue(new Delivery(null, epoch.getBytes(StandardCharsets.UTF_8)));
+        offer(null, epoch.getBytes(StandardCharsets.UTF_8));
         attached.countDown();
     }
 
@@ -139,35 +137,36 @@ final class LocalBus implements Bus {
             } catch (InterruptedException e) {
                 return;
             }
-            try {
-                if (d.topic() == null) {
-                    Bus.SyncListener l = syncListener;
-                    if (l != null) {
-                        l.synced(new String(d.body(), StandardCharsets.UTF_8), true);
-                    }
-                } else {
-                    handler.onMessage(d.topic(), d.body());
+            handle(d);
+        }
+    }
+
+    private void handle(Delivery d) {
+        try {
+            if (d.topic() == null) {
+                Bus.SyncListener l = syncListener;
+                if (l != null) {
+                    l.synced(new String(d.body(), StandardCharsets.UTF_8), true);
                 }
-            } catch (RuntimeException e) { // one component's bug stays in it
-                LOG.warning(name + ": handler failed on " + d.topic() + ": " + e);
+            } else {
+                handler.onMessage(d.topic(), d.body());
             }
+        } catch (RuntimeException e) { // one component's bug stays in it
+            LOG.warning(name + ": handler failed on " + d.topic() + ": " + e);
         }
     }
 
     @Override
     public void close() {
-        try {
-            flush(CLOSE_FLUSH_MS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
         broker.detach(this);
         running = false;
-        thread.interrupt();
-        try {
-            thread.join(2000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (thread != null) {
+            thread.interrupt();
+            try {
+                thread.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
     }
 

@@ -13,13 +13,13 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * cannot signal over an inproc socket without one per thread). Signals coalesce: one byte is in
  * flight at most, so a burst of publishes costs one wake-up.
  */
-public final class Wakeup implements AutoCloseable {
+final class Wakeup implements AutoCloseable {
     private final Pipe pipe;
     private final AtomicBoolean pending = new AtomicBoolean();
     private final ByteBuffer one = ByteBuffer.allocate(1);
     private final ByteBuffer sink = ByteBuffer.allocate(64);
 
-    public Wakeup() {
+    Wakeup() {
         try {
             pipe = Pipe.open();
             pipe.source().configureBlocking(false);
@@ -30,12 +30,12 @@ public final class Wakeup implements AutoCloseable {
     }
 
     /** What the poller watches for POLLIN. */
-    public SelectableChannel channel() {
+    SelectableChannel channel() {
         return pipe.source();
     }
 
     /** Any thread: makes the next (or current) poll return. */
-    public void signal() {
+    void signal() {
         if (pending.compareAndSet(false, true)) {
             synchronized (one) {
                 one.clear();
@@ -55,7 +55,7 @@ public final class Wakeup implements AutoCloseable {
      * slipped in between would otherwise have its byte read here while leaving {@code pending}
      * set, and every later {@link #signal} would skip the write until the poll timed out.
      */
-    public boolean clear() {
+    boolean clear() {
         boolean signalled = false;
         try {
             sink.clear();

@@ -80,15 +80,16 @@ public final class Engine implements AutoCloseable {
         }
         running = true;
         BusLink link = options.bus != null ? options.bus : BusLink.sockets(options.busIn, options.busOut);
-        bus = link.open("engine", List.of("roqme.", Topics.OVERRIDE_PREFIX), this::onMessage).onBrokerSync(this::onBrokerSync)
+        // onMessage decodes into the input state and wakes the solve loop: quick
+        bus = link.open("engine", List.of("roqme.", Topics.OVERRIDE_PREFIX), (Bus.QuickHandler) this::onMessage).onBrokerSync(this::onBrokerSync)
                 .start();
         sender = new ParameterSender(options.request, options.ackTimeoutMs, options.backoffMinMs,
                 options.backoffMaxMs, new SenderReports()).start();
         loop = new Thread(this::solveLoop, "engine-solve");
         loop.setDaemon(true);
         loop.start();
-        LOG.info("engine: model " + model.model() + ", backend " + backend.name() + ", bus " + options.busIn
-                + " / " + options.busOut + ", requests " + options.request);
+        LOG.info("engine: model " + model.model() + ", backend " + backend.name() + ", bus "
+                + (options.bus != null ? "in process" : options.busIn + " / " + options.busOut) + ", requests " + options.request);
         return this;
     }
 

@@ -77,7 +77,8 @@ public final class LiveRequirements implements AutoCloseable {
         long origin = System.nanoTime();
         this.clock = () -> (System.nanoTime() - origin) / 1_000_000;
         this.bus = link.open("requirements", List.of(Topics.CONTEXT, Topics.ESTIMATE, Topics.DECISION),
-                this::arrived).onBrokerSync((epoch, first) -> subscribed.countDown());
+                (Bus.QuickHandler) this::arrived) // it only queues
+                .onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "requirement-monitors");
         this.thread.setDaemon(true);
     }

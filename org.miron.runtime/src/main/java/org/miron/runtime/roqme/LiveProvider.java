@@ -88,7 +88,7 @@ public final class LiveProvider implements AutoCloseable {
         this.derived = model.model().contexts().stream()
                 .filter(v -> v.derived() != null && !v.derived().isNull() && !"eventtype".equals(v.type().kind()))
                 .toList();
-        this.bus = link.open("roqme", List.of(Topics.CONTEXT), this::arrived)
+        this.bus = link.open("roqme", List.of(Topics.CONTEXT), (Bus.QuickHandler) this::arrived) // it only queues
                 .onBrokerSync((epoch, first) -> subscribed.countDown());
         this.thread = new Thread(this::loop, "roqme-provider");
     }

@@ -203,6 +203,43 @@ public class LocalBusTest {
         }
     }
 
+    /**
+     * A quick handler runs on the broker's thread; what it publishes while handling a message goes
+     * out after that message, to every subscriber (local, quick or not, and external) in one order.
+     */
+    @Test
+    public void whatAQuickHandlerPublishesFollowsTheMessageItHandlesForEverybody() throws Exception {
+        Bus[] echo = new Bus[1];
+        List<String> quickSaw = Collections.synchronizedList(new ArrayList<>());
+        echo[0] = keep(broker.local().open("quick", List.of("roqme.estimate"), (Bus.QuickHandler) (t, b) -> {
+            quickSaw.add(Thread.currentThread().getName());
+            String body = new String(b, StandardCharsets.UTF_8);
+            echo[0].publish("miron.variant.task", "{\"answer\":" + body + "}");
+        })).start();
+        assertTrue(echo[0].awaitReady(TIMEOUT));
+        List<String> seen = new ArrayList<>();
+        local("watcher", seen, "roqme.estimate", "miron.variant.");
+        int base = await(seen, 1).size();
+        try (BusProbe probe = new BusProbe(ep.busOut(), "roqme.estimate", "miron.variant.", "miron.broker.");
+                BusClient robot = new BusClient("robot", ep.busIn(), null, List.of(), (t, b) -> { }).start()) {
+            assertNotNull(probe.await("miron.broker.hello", b -> true, TIMEOUT));
+            assertTrue(robot.awaitReady(TIMEOUT));
+            for (int i = 0; i < 20; i++) {
+                robot.publish("roqme.estimate", estimate("safety", i));
+            }
+            List<String> local = await(seen, base + 40).subList(base, base + 40);
+            for (int i = 0; i < 20; i++) {
+                assertEquals("roqme.estimate " + estimate("safety", i), local.get(2 * i));
+                assertEquals("miron.variant.task {\"answer\":" + estimate("safety", i) + "}", local.get(2 * i + 1));
+            }
+            assertNotNull(probe.await("miron.variant.task", b -> b.path("answer").path("seq").asInt() == 19, TIMEOUT));
+            List<String> external = probe.messages().stream().filter(m -> !m.topic().startsWith("miron.broker"))
+                    .map(m -> m.topic() + " " + m.body()).toList();
+            assertEquals("the external subscriber saw the same order", local, external);
+            assertTrue("on the broker's thread: " + quickSaw, quickSaw.stream().allMatch(n -> n.equals("broker-bus")));
+        }
+    }
+
     @Test
     public void closingFlushesTheLastOutputAndDetaches() throws Exception {
         List<String> seen = new ArrayList<>();

@@ -91,6 +91,11 @@ public final class BusProbe implements AutoCloseable {
         }
     }
 
+    /** Every message so far, in the order received. */
+    public synchronized List<Message> messages() {
+        return List.copyOf(received);
+    }
+
     public synchronized List<Message> messages(String topic) {
         return received.stream().filter(m -> m.topic().equals(topic)).toList();
     }
