@@ -77,6 +77,11 @@ public final class RunBench {
             }
         }
         componentsApart(io, floor, resident);
+        // Once more after the others: how far the floor itself moved during the run (the load varies).
+        ZmqPath.Figures again = py.floor(WARM, rounds);
+        if (again.measured()) {
+            System.out.printf("%-66s %9.3f %9.3f%n", "libzmq floor again, after the runs above", again.p50Ms, again.p99Ms);
+        }
         memory(resident);
         startup(startups);
     }
