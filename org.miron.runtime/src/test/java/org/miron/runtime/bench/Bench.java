@@ -21,13 +21,16 @@ import org.miron.runtime.engine.IoModel;
 import org.miron.runtime.engine.SolveResult;
 import org.miron.runtime.engine.SolverBackend;
 import org.miron.testkit.RepositoryRoot;
+import org.miron.testkit.runtime.ZmqPath;
 
 /**
  * {@code gradle :org.miron.runtime:bench [-Pbackends=minizinc,native] [-Prounds=N]}: prints, per
  * backend, decision p50/p99 and allocation per decision on intralogistics and on synthetic models
  * (SyntheticModel) of 5/50/200/1 000 varpoints, the time to generate the 1 000-varpoint model, and
  * end-to-end latencies over loopback sockets (EndToEnd), once more with repeated inputs answered
- * from a cache (the bus and engine alone). Numbers only; nothing is asserted.
+ * from a cache (the bus and engine alone), and the libzmq floor of the same path measured in the
+ * same run (ZmqPath: a pyzmq relay), each end-to-end figure also as a multiple of it, with our
+ * broker and engine driven by the floor's own pyzmq driver too. Numbers only; nothing is asserted.
  */
 public final class Bench {
     private static final int[] SIZES = { 5, 50, 200, 1000 };
@@ -69,13 +72,24 @@ public final class Bench {
         }
 
         System.out.println();
-        System.out.println("end to end over loopback (broker, engine, skill mock), ms   backend       p50       p99");
+        System.out.println("end to end over loopback (broker, engine, skill mock), ms   backend       p50       p99"
+                + "  p50 / p99 as multiples of the libzmq floor");
+        // The floor of the same path in the same run (issue 39), and our broker and engine driven by
+        // the floor's own publisher and subscriber.
+        ZmqPath py = ZmqPath.ensure(root);
+        ZmqPath.Figures floor = py.floor(300, 1000);
+        System.out.printf("%-60s %-9s %s%n", "libzmq floor: C proxy + echo, pyzmq driver (" + floor.rounds + ")", "",
+                floor.measured() ? String.format("%9.3f %9.3f  (%s)", floor.p50Ms, floor.p99Ms, floor.versions)
+                        : "not measured: " + floor.notMeasured);
+        if (py.available()) {
+            EndToEnd.pyDriven(models.get("intralogistics"), py, 300, 1000, floor);
+        }
         for (String backend : backends) {
             boolean fast = backend.equals("native");
             int r = fast ? Math.max(rounds, 1000) : rounds; // fast: a p99 worth the name
             int warm = fast ? 300 : 3; // the JIT's first compilations, reported apart
-            EndToEnd.run(backend, models.get("intralogistics"), warm, r, false);
-            EndToEnd.run(backend, models.get("intralogistics"), warm, r, true);
+            EndToEnd.run(backend, models.get("intralogistics"), warm, r, false, floor);
+            EndToEnd.run(backend, models.get("intralogistics"), warm, r, true, floor);
         }
     }
 

@@ -22,6 +22,7 @@ import org.miron.runtime.engine.SolverBackend;
 import org.miron.runtime.skill.ParameterChange;
 import org.miron.runtime.skill.SkillInterfaceMock;
 import org.miron.runtime.skill.SkillTable;
+import org.miron.testkit.runtime.ZmqPath;
 
 /**
  * Input → variant and input → change-parameter on intralogistics, every component in this JVM but
@@ -42,7 +43,7 @@ final class EndToEnd {
      * @param cached answer repeated inputs from a cache instead of the solver: what is left is the
      *               time of the bus, broker and engine alone
      */
-    static void run(String backend, Path ioJson, int warm, int rounds, boolean cached) throws Exception {
+    static void run(String backend, Path ioJson, int warm, int rounds, boolean cached, ZmqPath.Figures floor) throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         IoModel io = IoModel.load(ioJson);
         EngineOptions o = new EngineOptions(ioJson).endpoints(ep);
@@ -132,7 +133,9 @@ final class EndToEnd {
             }
             System.out.printf("%-60s %-9s %s%n", "input -> variant, warm-up rounds first (" + warm + ")", backend,
                     new Stats(cold).p50p99());
-            System.out.printf("%-60s %-9s %s%n", "input -> variant (" + rounds + ")", backend, new Stats(variant).p50p99());
+            Stats v = new Stats(variant);
+            System.out.printf("%-60s %-9s %s  %s%n", "input -> variant (" + rounds + ")", backend, v.p50p99(),
+                    floor.ratios(v.percentileMs(50), v.percentileMs(99)));
             System.out.printf("%-60s %-9s %s%n", "input -> change-parameter (" + rounds + ")", backend, new Stats(param).p50p99());
             System.out.printf("%-60s %-9s %s%n", "  overhead: input -> variant minus that round's solve", backend,
                     new Stats(variantOverhead).p50p99());
@@ -147,6 +150,28 @@ final class EndToEnd {
             if (solves[0] - solvesBefore < rounds) {
                 System.out.println("  (note: fewer solves than inputs in the parameter run: " + (solves[0] - solvesBefore) + ")");
             }
+        }
+    }
+
+    /**
+     * The same broker, engine and skill mock in this JVM, driven from outside by zmq_path.py's pyzmq
+     * publisher and subscriber: the publisher and subscriber of the libzmq floor, so that the two
+     * differ only in what stands between them.
+     */
+    static void pyDriven(Path ioJson, ZmqPath py, int warm, int rounds, ZmqPath.Figures floor) throws Exception {
+        Endpoints ep = Endpoints.freeLoopback();
+        EngineOptions o = new EngineOptions(ioJson).endpoints(ep);
+        o.backend = "native";
+        try (Broker broker = new Broker(ep).start();
+                SkillInterfaceMock skills = new SkillInterfaceMock(ep.skill(), ep.skillEvents(), SkillTable.defaults()).start();
+                Engine engine = Engine.create(o).start()) {
+            ZmqPath.Figures f = py.drive(ep.busIn(), ep.busOut(), warm, rounds);
+            String label = "input -> variant, pyzmq driver (" + rounds + ")";
+            if (!f.measured()) {
+                System.out.printf("%-60s %-9s not measured: %s%n", label, "native", f.notMeasured);
+                return;
+            }
+            System.out.printf("%-60s %-9s %9.3f %9.3f  %s%n", label, "native", f.p50Ms, f.p99Ms, floor.ratios(f.p50Ms, f.p99Ms));
         }
     }
 

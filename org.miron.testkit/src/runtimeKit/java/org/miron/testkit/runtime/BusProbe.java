@@ -18,10 +18,17 @@ public final class BusProbe implements AutoCloseable {
     public static final class Message { // a class, not a record: Gradle 4.4.1 cannot scan records
         final String topic;
         final JsonNode body;
+        final long receivedNanos;
 
-        Message(String topic, JsonNode body) {
+        Message(String topic, JsonNode body, long receivedNanos) {
             this.topic = topic;
             this.body = body;
+            this.receivedNanos = receivedNanos;
+        }
+
+        /** System.nanoTime() when the probe received it (benchmarks time start-up by it). */
+        public long receivedNanos() {
+            return receivedNanos;
         }
 
         public String topic() {
@@ -57,6 +64,7 @@ public final class BusProbe implements AutoCloseable {
                 if (topic == null) {
                     continue;
                 }
+                long at = System.nanoTime();
                 String body = sub.hasReceiveMore() ? sub.recvStr() : "";
                 JsonNode json;
                 try {
@@ -65,7 +73,7 @@ public final class BusProbe implements AutoCloseable {
                     json = null;
                 }
                 synchronized (this) {
-                    received.add(new Message(new String(topic, StandardCharsets.UTF_8), json));
+                    received.add(new Message(new String(topic, StandardCharsets.UTF_8), json, at));
                     notifyAll();
                 }
             }
@@ -76,11 +84,17 @@ public final class BusProbe implements AutoCloseable {
 
     /** First message (oldest first) on {@code topic} whose body satisfies {@code p}, or null on timeout. */
     public synchronized JsonNode await(String topic, Predicate<JsonNode> p, long timeoutMs) throws InterruptedException {
+        Message m = awaitMessage(topic, p, timeoutMs);
+        return m == null ? null : m.body();
+    }
+
+    /** The same, the message with its receive time. */
+    public synchronized Message awaitMessage(String topic, Predicate<JsonNode> p, long timeoutMs) throws InterruptedException {
         long end = System.currentTimeMillis() + timeoutMs;
         while (true) {
             for (Message m : received) {
                 if (m.topic().equals(topic) && m.body() != null && p.test(m.body())) {
-                    return m.body();
+                    return m;
                 }
             }
             long left = end - System.currentTimeMillis();
