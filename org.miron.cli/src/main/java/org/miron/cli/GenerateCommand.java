@@ -49,6 +49,11 @@ public class GenerateCommand implements Callable<Integer> {
                     + "model imports).")
     Integer btFormat;
 
+    @Option(names = "--inputs", paramLabel = "FILE",
+            description = "Also write every file the generation read (the models and all they import), one absolute "
+                    + "path a line: what a build tool or miron run's cache checks for changes.")
+    File inputs;
+
     @Spec
     CommandSpec spec;
 
@@ -75,7 +80,8 @@ public class GenerateCommand implements Callable<Integer> {
             }
         }
         Path dir = output.toPath();
-        BatchGeneration.Outcome outcome = new BatchGeneration(new ModelLoader(), policy, btFormat).generate(files, dir);
+        ModelLoader loader = new ModelLoader();
+        BatchGeneration.Outcome outcome = new BatchGeneration(loader, policy, btFormat).generate(files, dir);
         PrintWriter out = spec.commandLine().getOut();
         outcome.validation().forEach(out::println);
         outcome.generationErrors().forEach(out::println);
@@ -85,6 +91,21 @@ public class GenerateCommand implements Callable<Integer> {
             err.println(dir + ": error: cannot write: " + outcome.writeError());
             err.flush();
         }
+        if (inputs != null && !writeInputs(loader, err)) {
+            return 1;
+        }
         return outcome.succeeded() ? 0 : 1;
+    }
+
+    private boolean writeInputs(ModelLoader loader, PrintWriter err) {
+        try {
+            java.nio.file.Files.write(inputs.toPath(), loader.loadedFiles().stream()
+                    .map(f -> f.toPath().toAbsolutePath().normalize().toString()).distinct().toList());
+            return true;
+        } catch (java.io.IOException e) {
+            err.println(inputs + ": error: cannot write: " + e.getMessage());
+            err.flush();
+            return false;
+        }
     }
 }

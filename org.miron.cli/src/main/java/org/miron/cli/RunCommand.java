@@ -46,6 +46,11 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     BrokerSetup broker = new BrokerSetup();
 
+    @Option(names = "--model-cache", paramLabel = "DIR", description = "where the model's generation is kept between runs "
+            + "and reused while the model and all it imports are unchanged (default: $XDG_CACHE_HOME/miron/run or "
+            + "~/.cache/miron/run)")
+    Path modelCache;
+
     @Option(names = "--no-provider", description = "do not run the RoQME provider: the estimates come from elsewhere "
             + "(the original RoQME provider, or `miron roqme run` on another host)")
     boolean noProvider;
@@ -90,7 +95,8 @@ public final class RunCommand implements Callable<Integer> {
         }
         RunModel generated;
         try {
-            generated = RunModel.generate(model, noProvider ? null : new LinkedHashMap<>(params), err);
+            generated = RunModel.generate(model, noProvider ? null : new LinkedHashMap<>(params), err,
+                    modelCache != null ? modelCache : RunModel.defaultCache());
         } catch (RunModel.Refused e) {
             return fail(err, e.getMessage(), e.status());
         }
@@ -103,6 +109,8 @@ public final class RunCommand implements Callable<Integer> {
         o.bridgeStatusMs = statusInterval;
         o.engine = solving.applyTo(new EngineOptions(generated.ioJson()));
         o.engine.statusIntervalMs = statusInterval;
+        out.println("miron run: model " + model.getFileName() + ": " + generated.origin());
+        out.flush();
         RobotSide side = new RobotSide(generated, o).onStarted(RobotSide.printer(out, "miron run: "))
                 .onRequirement(e -> {
                     out.println("miron run: requirement " + (e.verdict().equals(org.miron.runtime.requirement.RequirementEvent.MET)
