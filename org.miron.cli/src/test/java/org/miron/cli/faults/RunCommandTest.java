@@ -39,7 +39,8 @@ public class RunCommandTest {
     private String[] args(String... extra) {
         List<String> a = new ArrayList<>(List.of("run", MODEL, "--request", ep.request(), "--skill", ep.skill(),
                 "--bus-in", ep.busIn(), "--bus-out", ep.busOut(),
-                "--decision-log", tmp.getRoot().toPath().resolve("decisions.jsonl").toString()));
+                "--decision-log", tmp.getRoot().toPath().resolve("decisions.jsonl").toString(),
+                "--model-cache", tmp.getRoot().toPath().resolve("cache").toString()));
         a.addAll(List.of(extra));
         return a.toArray(String[]::new);
     }
@@ -193,6 +194,53 @@ public class RunCommandTest {
             }
             assertEquals(p.output(), documentedSigterm(), p.terminate(TIMEOUT));
         }
+    }
+
+    /**
+     * The robot's process holds no language tooling: the model is generated in a JVM of its own,
+     * then kept; a restart with nothing changed starts from what was kept, and a change to a file
+     * the model imports generates it again.
+     */
+    @Test
+    public void theGenerationIsKeptWhileTheModelAndItsImportsAreUnchanged() throws Exception {
+        Path dir = tmp.getRoot().toPath();
+        Path copy = dir.resolve("model");
+        Files.createDirectories(copy);
+        for (String f : List.of("intralogistics.miron", "intralogistics.bt", "intralogistics.roqme")) {
+            Files.copy(RepositoryRoot.resolve("examples/intralogistics/" + f), copy.resolve(f));
+        }
+        String[] run = args("--no-provider");
+        run[1] = copy.resolve("intralogistics.miron").toString();
+        String[] outputs = new String[3];
+        for (int i = 0; i < 3; i++) {
+            if (i == 2) { // the imported tree changes (a comment): generated again
+                Files.writeString(copy.resolve("intralogistics.bt"), "\n<!-- changed -->\n", java.nio.file.StandardOpenOption.APPEND);
+            }
+            try (RuntimeProcess p = RuntimeProcess.start(dir, "run", run)) {
+                assertTrue(p.output(), p.awaitOutput("miron run: running intralogistics.miron", TIMEOUT));
+                outputs[i] = p.output();
+                if (i < 2) { // generated in a JVM of its own, or kept
+                    String classes = loadedClasses(p.pid());
+                    assertTrue(classes, classes.contains("org.miron.runtime.engine.Engine"));
+                    for (String tooling : List.of("org.eclipse.xtext.", "org.eclipse.emf.", "com.google.inject.")) {
+                        assertFalse(tooling + " loaded in the robot's process", classes.contains(tooling));
+                    }
+                }
+                assertEquals(p.output(), documentedSigterm(), p.terminate(TIMEOUT));
+            }
+        }
+        assertTrue(outputs[0], outputs[0].contains("miron run: model intralogistics.miron: generated in "));
+        assertTrue(outputs[1], outputs[1].contains("miron run: model intralogistics.miron: unchanged since it was generated into "));
+        assertTrue(outputs[2], outputs[2].contains("miron run: model intralogistics.miron: generated in "));
+    }
+
+    /** Every class the JVM has loaded, by the JDK's own jcmd. */
+    private static String loadedClasses(long pid) throws Exception {
+        Process jcmd = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "jcmd").toString(),
+                Long.toString(pid), "VM.class_hierarchy").redirectErrorStream(true).start();
+        String out = new String(jcmd.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertEquals(out, 0, jcmd.waitFor());
+        return out;
     }
 
     @Test
