@@ -154,9 +154,13 @@ public final class RunBench {
     private void startup(int runs) throws Exception {
         System.out.println();
         System.out.println("start-up of miron run --no-provider, s    launcher -> JVM start   JVM up   JVM up -> broker"
-                + "   -> running   -> first decision");
+                + "   -> running   -> first decision   model");
         double[] decide = new double[runs];
         int done = 0;
+        double cold = Double.NaN;
+        if (java.nio.file.Files.exists(modelCache())) {
+            org.miron.testkit.Folders.delete(modelCache()); // the first launch generates, the others find it kept
+        }
         for (int i = 0; i < runs; i++) {
             Endpoints ep = Endpoints.freeLoopback();
             Path log = dir.resolve("class-load-" + i + ".log");
@@ -167,11 +171,17 @@ public final class RunBench {
                     continue;
                 }
                 JvmUpLog up = JvmUpLog.read(log);
-                decide[done++] = (first.receivedNanos() - up.upNanos) / 1e9;
+                double s = (first.receivedNanos() - up.upNanos) / 1e9;
+                boolean generated = run.lineNanos("miron run: model " + model.getFileName() + ": generated") >= 0;
+                if (generated) {
+                    cold = s;
+                } else {
+                    decide[done++] = s;
+                }
                 // "broker:" is printed once the model is generated and the broker bound, "running" once all started.
-                System.out.printf("  launch %d %41.3f %8.3f %16.3f %11.3f %18.3f%n", i + 1, (up.startNanos - run.launchedNanos) / 1e9,
+                System.out.printf("  launch %d %41.3f %8.3f %16.3f %11.3f %18.3f   %s%n", i + 1, (up.startNanos - run.launchedNanos) / 1e9,
                         (up.upNanos - up.startNanos) / 1e9, since(up, run.lineNanos("miron run: broker:")),
-                        since(up, run.lineNanos("miron run: running")), decide[done - 1]);
+                        since(up, run.lineNanos("miron run: running")), s, generated ? "generated" : "kept");
             }
         }
         if (done == 0) {
@@ -180,7 +190,9 @@ public final class RunBench {
         double[] d = Arrays.copyOf(decide, done);
         Arrays.sort(d);
         double median = d.length % 2 == 1 ? d[d.length / 2] : (d[d.length / 2 - 1] + d[d.length / 2]) / 2;
-        System.out.printf("  median JVM up -> first decision %.3f s; target <= 3 s: %s%n", median, verdict(median <= 3));
+        System.out.printf("  median JVM up -> first decision, model kept from an earlier run: %.3f s; target <= 3 s: %s%n", median,
+                verdict(median <= 3));
+        System.out.printf("  the first launch of a new or changed model also generates it: %.3f s%n", cold);
         System.out.println("  (the JVM's own clock: -Xlog:class+load with timenanos,uptimenanos in JAVA_TOOL_OPTIONS; JVM start ="
                 + " a stamp minus its uptime, JVM up = " + JvmUpLog.MAIN + " loaded; the decision as this JVM's bus"
                 + " subscriber received it, connected before the launch)");
@@ -193,7 +205,13 @@ public final class RunBench {
 
     private String[] runArgs(Endpoints ep) {
         return new String[] { "run", model.toString(), "--no-provider", "--request", ep.request(), "--skill", ep.skill(),
-                "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--decision-log", dir.resolve("run-decisions.jsonl").toString() };
+                "--bus-in", ep.busIn(), "--bus-out", ep.busOut(), "--decision-log", dir.resolve("run-decisions.jsonl").toString(),
+                "--model-cache", modelCache().toString() };
+    }
+
+    /** The bench's own cache of miron run's generations (the user's stays untouched). */
+    private Path modelCache() {
+        return dir.resolve("model-cache");
     }
 
     private static SkillInterfaceMock skills(Endpoints ep) {
