@@ -28,7 +28,7 @@ import picocli.CommandLine.Spec;
  * the separate commands.
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
-        description = "Run the MIRoN side of a robot in one process on a .miron model (generated in memory): the broker "
+        description = "Run the MIRoN side of a robot in one process on a .miron model (generated in a JVM of its own, kept while unchanged): the broker "
                 + "(as `miron broker`), the RoQME provider on its RoQME part (as `miron roqme run`), the requirement "
                 + "monitors, the engine (as `miron engine`) and with --dds-bridge the DDS bridge. The executor and the "
                 + "skill interface connect to the broker as they do to `miron broker`.",
