@@ -136,6 +136,25 @@ public class VerifyCommandTest {
         assertTrue(wrong.err.toString(), wrong.err.toString().contains("error [miron.requirement-"));
     }
 
+    /** A context the world never publishes: never evaluated, said with the signal, not an error, and exit 1. */
+    @Test
+    public void aRequirementOverASignalThatNeverArrivesIsNeverEvaluated() throws Exception {
+        Path model = withRequirements("requirement lidarClear : always (roqme.Lidar > 1 or roqme.Docked)\n"
+                + "requirement docks : eventually within 2 hours roqme.Docked\n");
+        Path roqme = model.resolveSibling("intralogistics.roqme");
+        Files.writeString(roqme, Files.readString(roqme) + "\ncontext Lidar : number unit \"m\" (0:10)\n");
+        Cli cli = new Cli();
+        assertEquals(cli.out() + cli.err, 1, cli.run("verify", model.toString(), "--world", WORLD.toString(), "--duration", "30m",
+                "--runs", "2", "--out", out("n").toString()));
+        assertTrue(cli.out(), row(cli.out(), "lidarClear", "adaptive").endsWith("never evaluated: no value for roqme.Lidar"));
+        assertTrue(cli.out(), row(cli.out(), "docks", "adaptive").endsWith("holds"));
+        JsonNode summary = Json.MAPPER.readTree(out("n").resolve("summary.json").toFile());
+        assertEquals(List.of(), JsonSchemaFile.VERIFY_SUMMARY.problems(summary));
+        JsonNode lidar = summary.path("requirements").path("lidarClear").path("adaptive");
+        assertEquals("not-evaluated", lidar.path("verdict").asText());
+        assertEquals(2, lidar.path("notEvaluated").asInt());
+    }
+
     @Test
     public void theHospitalRequirementsAreCheckedInItsWorld() throws Exception {
         Path model = Cli.ROOT.resolve("examples/hospital-delivery/hospital.miron");
