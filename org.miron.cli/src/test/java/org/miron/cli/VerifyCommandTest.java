@@ -140,7 +140,8 @@ public class VerifyCommandTest {
     @Test
     public void aRequirementOverASignalThatNeverArrivesIsNeverEvaluated() throws Exception {
         Path model = withRequirements("requirement lidarClear : always (roqme.Lidar > 1 or roqme.Docked)\n"
-                + "requirement docks : eventually within 2 hours roqme.Docked\n");
+                + "requirement docks : eventually within 2 hours roqme.Docked\n"
+                + "requirement overfull : eventually roqme.BatteryLevel > 100\n"); // no witness by the end: open, not violated
         Path roqme = model.resolveSibling("intralogistics.roqme");
         Files.writeString(roqme, Files.readString(roqme) + "\ncontext Lidar : number unit \"m\" (0:10)\n");
         Cli cli = new Cli();
@@ -148,6 +149,11 @@ public class VerifyCommandTest {
                 "--runs", "2", "--out", out("n").toString()));
         assertTrue(cli.out(), row(cli.out(), "lidarClear", "adaptive").endsWith("never evaluated: no value for roqme.Lidar"));
         assertTrue(cli.out(), row(cli.out(), "docks", "adaptive").endsWith("holds"));
+        assertTrue(cli.out(), row(cli.out(), "overfull", "adaptive").endsWith("holds, open at the end in 2"));
+        // the report says the verdicts as the table does
+        String report = Files.readString(out("n").resolve("report.html"));
+        assertTrue(report, report.contains("<td class=\"not-evaluated\">never evaluated: no value for roqme.Lidar</td>"));
+        assertTrue(report, report.contains("<td class=\"holds\">holds, open at the end in 2</td>"));
         JsonNode summary = Json.MAPPER.readTree(out("n").resolve("summary.json").toFile());
         assertEquals(List.of(), JsonSchemaFile.VERIFY_SUMMARY.problems(summary));
         JsonNode lidar = summary.path("requirements").path("lidarClear").path("adaptive");

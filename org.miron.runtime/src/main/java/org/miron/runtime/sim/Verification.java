@@ -277,7 +277,8 @@ public final class Verification {
         return b.toString();
     }
 
-    private static String verdictText(Check c) {
+    /** The verdict as the table says it: with the sequential test's runs, open ends and runs never evaluated. */
+    public static String verdictText(Check c) {
         String v = switch (c.verdict()) {
             case "not-evaluated" -> "never evaluated: no value for " + String.join(", ", c.neverValued());
             default -> c.verdict();
