@@ -119,6 +119,17 @@ public class VerifyCommandTest {
         assertEquals(0.85, s.path("indifference").get(0).asDouble(), 1e-9);
     }
 
+    /** --runs N stops a sequential test that has not decided: undecided, exit 1. */
+    @Test
+    public void aSequentialTestCutShortByRunsIsUndecided() throws Exception {
+        Path model = withRequirements("requirement rarelyStranded : never (roqme.BatteryLevel < 1 and not roqme.Docked) "
+                + "with probability >= 0.9\n");
+        Cli cli = new Cli();
+        assertEquals(cli.err.toString(), 1, cli.run("verify", model.toString(), "--world", WORLD.toString(), "--duration", "10m",
+                "--runs", "1", "--out", out("u").toString()));
+        assertTrue(cli.out(), row(cli.out(), "rarelyStranded", "adaptive").endsWith("undecided after 1 run"));
+    }
+
     @Test
     public void usageErrorsAndAModelWithoutRequirementsAreExitTwo() throws Exception {
         Path none = withRequirements("");

@@ -284,7 +284,7 @@ public final class Verification {
             default -> c.verdict();
         };
         if (c.sprt() != null) {
-            v += c.sprt().decision() == Sprt.Decision.UNDECIDED ? " after " + c.sprt().runs() + " runs"
+            v += c.sprt().decision() == Sprt.Decision.UNDECIDED ? " after " + c.sprt().runs() + (c.sprt().runs() == 1 ? " run" : " runs")
                     : " (SPRT, " + c.sprt().runs() + " runs)";
         }
         if (c.open() > 0 && c.violated() < c.runs()) {
