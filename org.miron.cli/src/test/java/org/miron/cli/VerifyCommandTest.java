@@ -141,6 +141,9 @@ public class VerifyCommandTest {
         Cli both = new Cli();
         assertEquals(2, both.run("verify", model.toString(), "--world", WORLD.toString(), "--runs", "3", "--confidence", "0.9"));
         assertTrue(both.err.toString(), both.err.toString().contains("--runs and --confidence exclude each other"));
+        Cli bounded = new Cli(); // --max-runs bounds a sequential check only: with --runs it would be ignored
+        assertEquals(2, bounded.run("verify", model.toString(), "--world", WORLD.toString(), "--runs", "3", "--max-runs", "5"));
+        assertTrue(bounded.err.toString(), bounded.err.toString().contains("--runs and --max-runs exclude each other"));
         Path bad = withRequirements("requirement late : always within 0 seconds roqme.Docked with probability >= 1.5\n");
         Cli wrong = new Cli();
         assertEquals(2, wrong.run("verify", bad.toString(), "--world", WORLD.toString(), "--out", out("f").toString()));
