@@ -56,9 +56,10 @@ public class VerifyCommand implements Callable<Integer> {
             description = "half-width of the sequential test's indifference region around p (default: ${DEFAULT-VALUE})")
     double indifference;
 
-    @Option(names = "--max-runs", paramLabel = "N", defaultValue = "1000",
-            description = "most runs per policy of a sequential check (default: ${DEFAULT-VALUE})")
-    int maxRuns;
+    @Option(names = "--max-runs", paramLabel = "N",
+            description = "most runs per policy of a sequential check (default: " + DEFAULT_MAX_RUNS + ")")
+    Integer maxRuns;
+    private static final int DEFAULT_MAX_RUNS = 1000;
 
     @Option(names = "--policy", paramLabel = "POLICY",
             description = "adaptive, preset or fixed:vp=value,...; repeatable (default: adaptive)")
@@ -83,9 +84,14 @@ public class VerifyCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             return usage(e.getMessage());
         }
-        if (durationMs <= 0 || (runs != null && runs < 1) || maxRuns < 1) {
+        if (durationMs <= 0 || (runs != null && runs < 1) || (maxRuns != null && maxRuns < 1)) {
             return usage("miron verify: error: --duration, --runs and --max-runs must be positive");
         }
+        if (runs != null && maxRuns != null) {
+            return usage("miron verify: error: --runs and --max-runs exclude each other: --max-runs bounds a sequential "
+                    + "check, --runs makes that many runs");
+        }
+        int most = maxRuns == null ? DEFAULT_MAX_RUNS : maxRuns;
         if (runs != null && confidence != null) {
             return usage("miron verify: error: --runs and --confidence exclude each other: a fixed number of runs, or "
                     + "as many as the sequential test needs");
@@ -118,12 +124,12 @@ public class VerifyCommand implements Callable<Integer> {
         }
         boolean sequential = confidence != null || (runs == null && probabilistic);
         int cores = run.cores();
-        Verification.Options options = new Verification.Options(sequential ? 0 : runs == null ? 10 : runs, maxRuns,
+        Verification.Options options = new Verification.Options(sequential ? 0 : runs == null ? 10 : runs, most,
                 confidence == null ? 0.95 : confidence, indifference, run.seed, durationMs, cores);
         Logger.getLogger("").setLevel(Level.SEVERE); // the solver's per-decision logs are not the user's concern here
         console.println("MIRoN verify: " + run.title() + ", "
                 + setup.requirements().requirements().size() + " requirement(s), "
-                + (sequential ? "runs of " + run.duration + " until the sequential test decides (at most " + maxRuns + ")"
+                + (sequential ? "runs of " + run.duration + " until the sequential test decides (at most " + most + ")"
                         : options.runs() + " run(s) of " + run.duration) + " per policy, seed " + run.seed);
         console.flush();
         long started = System.nanoTime();

@@ -41,12 +41,18 @@ public class RequirementCheckCommandTest {
                 + "strictly between 0 and 1, not 1.5 (a requirement every run must meet has no 'with probability')\n"
                 + "tank.miron:6:24: error [miron.requirement-unknown-name]: unknown variable 'q.level'\n"
                 + "tank.miron:7:10: error [miron.requirement-temporal-outside]: 'always' is a temporal operator: it is only "
-                + "allowed in a requirement\n",
+                + "allowed in a requirement\n"
+                + "tank.miron:8:35: error [miron.requirement-bound]: the bound of 'eventually within' must be at least "
+                + "1 millisecond, not -2 minutes\n"
+                + "tank.miron:9:32: error [miron.requirement-type]: cannot compare 'pump' (number) with 'q.open' (boolean) "
+                + "using '='\n",
                 check(1, "requirement a : always q.tankLevel\n"
                         + "requirement b : eventually within 0 seconds q.open\n"
                         + "requirement c : always q.tankLevel <= 50 with probability >= 1.5\n"
                         + "requirement d : always q.level > 1\n"
-                        + "rule e : always q.open implies pump = 1\n"));
+                        + "rule e : always q.open implies pump = 1\n"
+                        + "requirement f : eventually within -2 minutes q.open\n"
+                        + "requirement g : always (pump = q.open)\n"));
     }
 
     @Test

@@ -119,6 +119,17 @@ public class VerifyCommandTest {
         assertEquals(0.85, s.path("indifference").get(0).asDouble(), 1e-9);
     }
 
+    /** --runs N stops a sequential test that has not decided: undecided, exit 1. */
+    @Test
+    public void aSequentialTestCutShortByRunsIsUndecided() throws Exception {
+        Path model = withRequirements("requirement rarelyStranded : never (roqme.BatteryLevel < 1 and not roqme.Docked) "
+                + "with probability >= 0.9\n");
+        Cli cli = new Cli();
+        assertEquals(cli.err.toString(), 1, cli.run("verify", model.toString(), "--world", WORLD.toString(), "--duration", "10m",
+                "--runs", "1", "--out", out("u").toString()));
+        assertTrue(cli.out(), row(cli.out(), "rarelyStranded", "adaptive").endsWith("undecided after 1 run"));
+    }
+
     @Test
     public void usageErrorsAndAModelWithoutRequirementsAreExitTwo() throws Exception {
         Path none = withRequirements("");
@@ -130,10 +141,38 @@ public class VerifyCommandTest {
         Cli both = new Cli();
         assertEquals(2, both.run("verify", model.toString(), "--world", WORLD.toString(), "--runs", "3", "--confidence", "0.9"));
         assertTrue(both.err.toString(), both.err.toString().contains("--runs and --confidence exclude each other"));
+        Cli bounded = new Cli(); // --max-runs bounds a sequential check only: with --runs it would be ignored
+        assertEquals(2, bounded.run("verify", model.toString(), "--world", WORLD.toString(), "--runs", "3", "--max-runs", "5"));
+        assertTrue(bounded.err.toString(), bounded.err.toString().contains("--runs and --max-runs exclude each other"));
         Path bad = withRequirements("requirement late : always within 0 seconds roqme.Docked with probability >= 1.5\n");
         Cli wrong = new Cli();
         assertEquals(2, wrong.run("verify", bad.toString(), "--world", WORLD.toString(), "--out", out("f").toString()));
         assertTrue(wrong.err.toString(), wrong.err.toString().contains("error [miron.requirement-"));
+    }
+
+    /** A context the world never publishes: never evaluated, said with the signal, not an error, and exit 1. */
+    @Test
+    public void aRequirementOverASignalThatNeverArrivesIsNeverEvaluated() throws Exception {
+        Path model = withRequirements("requirement lidarClear : always (roqme.Lidar > 1 or roqme.Docked)\n"
+                + "requirement docks : eventually within 2 hours roqme.Docked\n"
+                + "requirement overfull : eventually roqme.BatteryLevel > 100\n"); // no witness by the end: open, not violated
+        Path roqme = model.resolveSibling("intralogistics.roqme");
+        Files.writeString(roqme, Files.readString(roqme) + "\ncontext Lidar : number unit \"m\" (0:10)\n");
+        Cli cli = new Cli();
+        assertEquals(cli.out() + cli.err, 1, cli.run("verify", model.toString(), "--world", WORLD.toString(), "--duration", "30m",
+                "--runs", "2", "--out", out("n").toString()));
+        assertTrue(cli.out(), row(cli.out(), "lidarClear", "adaptive").endsWith("never evaluated: no value for roqme.Lidar"));
+        assertTrue(cli.out(), row(cli.out(), "docks", "adaptive").endsWith("holds"));
+        assertTrue(cli.out(), row(cli.out(), "overfull", "adaptive").endsWith("holds, open at the end in 2"));
+        // the report says the verdicts as the table does
+        String report = Files.readString(out("n").resolve("report.html"));
+        assertTrue(report, report.contains("<td class=\"not-evaluated\">never evaluated: no value for roqme.Lidar</td>"));
+        assertTrue(report, report.contains("<td class=\"holds\">holds, open at the end in 2</td>"));
+        JsonNode summary = Json.MAPPER.readTree(out("n").resolve("summary.json").toFile());
+        assertEquals(List.of(), JsonSchemaFile.VERIFY_SUMMARY.problems(summary));
+        JsonNode lidar = summary.path("requirements").path("lidarClear").path("adaptive");
+        assertEquals("not-evaluated", lidar.path("verdict").asText());
+        assertEquals(2, lidar.path("notEvaluated").asInt());
     }
 
     @Test

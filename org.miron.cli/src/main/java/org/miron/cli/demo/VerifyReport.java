@@ -68,7 +68,7 @@ public final class VerifyReport {
                         .append("</code></td><td>").append(TimelineReport.escape(r.policy().name())).append("</td><td>").append(c.runs())
                         .append("</td><td>").append(c.violated()).append("</td><td>")
                         .append(String.format(Locale.ROOT, "%.3f [%.3f, %.3f]", c.interval().estimate(), c.interval().lo(), c.interval().hi()))
-                        .append("</td><td class=\"").append(c.verdict()).append("\">").append(TimelineReport.escape(c.verdict()))
+                        .append("</td><td class=\"").append(c.verdict()).append("\">").append(TimelineReport.escape(Verification.verdictText(c)))
                         .append("</td><td>").append(c.first() == null ? "" : "<a href=\"#" + anchor(c, r) + "\">run " + c.first().run()
                                 + " at " + RequirementEvent.seconds(c.first().timeMs()) + " s</a>")
                         .append("</td></tr>\n");

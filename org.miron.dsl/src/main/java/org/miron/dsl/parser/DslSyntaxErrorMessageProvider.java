@@ -4,6 +4,8 @@ import static org.miron.dsl.validation.RoqmeIssueCodes.SYNTAX_ERROR;
 
 import org.antlr.runtime.FailedPredicateException;
 import org.antlr.runtime.RecognitionException;
+import org.antlr.runtime.Token;
+import org.antlr.runtime.TokenStream;
 import org.eclipse.xtext.diagnostics.Diagnostic;
 import org.eclipse.xtext.nodemodel.SyntaxErrorMessage;
 import org.eclipse.xtext.parser.antlr.SyntaxErrorMessageProvider;
@@ -26,6 +28,12 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
             return new SyntaxErrorMessage("a documentation comment /** ... */ must come right before a declaration"
                     + " (model header, import, type, context, param, var, timer, beliefvar, property, observation,"
                     + " varpoint or rule); write /* ... */ for other comments", SYNTAX_ERROR);
+        }
+        if (e != null && e.token != null && e.token.getText() != null && e.token.getText().matches("[0-9.]+")
+                && "within".equals(previousText(e))) {
+            // the bound's unit is missing or misspelt (within 5 s): without one, within reads as a name
+            return new SyntaxErrorMessage("a bound is a number and a time unit: within " + e.token.getText()
+                    + " seconds (milliseconds, seconds, minutes, hours or days)", SYNTAX_ERROR);
         }
         String lexer = context.getDefaultMessage();
         if (e == null && lexer != null && lexer.contains("character '<EOF>'")) {
@@ -50,6 +58,20 @@ public class DslSyntaxErrorMessageProvider extends SyntaxErrorMessageProvider {
         // a ranged message keeps Xtext's code: Xtext recognises it by that code to mark part of a token
         return Diagnostic.SYNTAX_DIAGNOSTIC_WITH_RANGE.equals(message.getIssueCode()) ? message
                 : new SyntaxErrorMessage(message.getMessage(), SYNTAX_ERROR, message.getIssueData());
+    }
+
+    /** The text of the visible token before the offending one, or null. */
+    private static String previousText(RecognitionException e) {
+        if (!(e.input instanceof TokenStream tokens)) {
+            return null;
+        }
+        for (int i = e.token.getTokenIndex() - 1; i >= 0; i--) {
+            Token t = tokens.get(i);
+            if (t.getChannel() == Token.DEFAULT_CHANNEL) {
+                return t.getText();
+            }
+        }
+        return null;
     }
 
     /** Whether the offending token is a keyword (a word that is not an identifier). */

@@ -7,6 +7,8 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
+import org.eclipse.emf.ecore.EObject;
+import org.eclipse.emf.ecore.EStructuralFeature;
 import org.eclipse.xtext.validation.Check;
 import org.miron.dsl.roqme.BinaryExpression;
 import org.miron.dsl.roqme.ConditionalExpression;
@@ -19,6 +21,7 @@ import org.miron.dsl.roqme.RoqmePackage;
 import org.miron.dsl.roqme.UnaryExpression;
 import org.miron.dsl.roqme.WhileExpression;
 import org.miron.dsl.util.ExprType;
+import org.miron.dsl.util.Formulas;
 import org.miron.dsl.util.Names;
 import org.miron.dsl.util.Types;
 
@@ -38,6 +41,22 @@ public class ExpressionChecks extends CheckSet {
         for (String f : List.of("pow", "at", "includes")) {
             ARITY.put(f, new int[] { 2, 2 });
         }
+    }
+
+    /**
+     * Inside a requirement an operand type error is the requirement's (miron.requirement-type, as
+     * docs/issue-codes.md says), and an operator over a temporal formula is RequirementChecks' to
+     * tell, once.
+     */
+    @Override
+    protected void error(String message, EObject source, EStructuralFeature feature, String code, String... issueData) {
+        if ((OPERAND_TYPE.equals(code) || INCOMPARABLE.equals(code)) && Formulas.requirementOf(source) != null) {
+            if (source instanceof Expression x && !Formulas.isState(x)) {
+                return;
+            }
+            code = MironIssueCodes.REQUIREMENT_TYPE;
+        }
+        super.error(message, source, feature, code, issueData);
     }
 
     @Check

@@ -34,7 +34,7 @@ import org.miron.dsl.util.Types;
  * Requirements (docs/requirements.md): boolean state formulas over what the monitor can read
  * (contexts, properties, params, varpoints), positive bounds, a probability in (0, 1), and temporal
  * operators and implies nowhere else. Operand types inside state formulas are RoQME's
- * ExpressionChecks'; what the declared ranges make trivial or unsatisfiable is the generator's
+ * ExpressionChecks' (which report them as miron.requirement-type inside a requirement); what the declared ranges make trivial or unsatisfiable is the generator's
  * analysis (MironValidator.checkRuleInteractions).
  */
 public class RequirementChecks extends CheckSet {

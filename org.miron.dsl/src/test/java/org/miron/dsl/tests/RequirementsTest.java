@@ -69,6 +69,13 @@ public class RequirementsTest {
         expect(issues, lines, 16, "eventually", MironIssueCodes.REQUIREMENT_TEMPORAL_OUTSIDE);
         expect(issues, lines, 17, "a :", "roqme.duplicate-name");
         expect(issues, lines, 18, "(always", MironIssueCodes.REQUIREMENT_TYPE);
+        // a negative bound is a bound, not the variable 'within' minus a time
+        expect(issues, lines, 20, "-3 seconds", MironIssueCodes.REQUIREMENT_BOUND);
+        // operand type errors inside a requirement are the requirement's; a comparison over a
+        // temporal formula is told once
+        expect(issues, lines, 21, "r.docked)", MironIssueCodes.REQUIREMENT_TYPE);
+        expect(issues, lines, 22, "(eventually", MironIssueCodes.REQUIREMENT_TYPE);
+        assertTrue(issues.stream().noneMatch(i -> "roqme.operand-type".equals(i.getCode())));
     }
 
     /** An issue with this code on this line, at the column where text starts. */

@@ -91,6 +91,10 @@ public class CompletionLspTest {
         List<String> afterAlias = complete("intralogistics.miron", text, "r2 : always (roqme.");
         assertHas(afterAlias, "roqme.BatteryLevel", "roqme.safety", "roqme.Docked");
         assertHas(complete("intralogistics.miron", text, "implies eventually "), "within");
+        // the bound's units, and a varpoint's values, as RoQME and rules write them
+        assertHas(complete("intralogistics.miron", text, "eventually within 5 "), "milliseconds", "seconds", "minutes",
+                "hours");
+        assertHas(complete("intralogistics.miron", text, "5 seconds task = "), "task::dock");
         assertHas(complete("intralogistics.miron", text, "task = task::dock) "), "with", "implies");
         assertHas(complete("intralogistics.miron", text, "task::dock) with "), "probability");
         assertHas(complete("intralogistics.miron", text, "with probability "), ">=");

@@ -17,7 +17,9 @@ final class Eventually extends FormulaNode {
 
     Eventually(FormulaNode in, long withinMs) {
         this.in = in;
-        this.d = withinMs;
+        // a bound past any run (within 10^20 hours: Long.MAX_VALUE ms) is as long as an unbounded
+        // window and must not overflow t + D either
+        this.d = Math.min(withinMs, UNBOUNDED);
     }
 
     @Override

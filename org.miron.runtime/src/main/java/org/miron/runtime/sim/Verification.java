@@ -3,9 +3,11 @@ package org.miron.runtime.sim;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -43,9 +45,12 @@ public final class Verification {
     public record Counterexample(int run, long seed, long timeMs, long detectedMs, Map<String, Object> values) {
     }
 
-    /** One requirement under one policy. {@code sprt} is null unless it is probabilistic. */
+    /**
+     * One requirement under one policy. {@code sprt} is null unless it is probabilistic;
+     * {@code neverValued}: the signals that had no value in some run not evaluated, in the order read.
+     */
     public record Check(RequirementModel.Requirement requirement, int runs, int violated, int open, int notEvaluated,
-            ClopperPearson.Interval interval, String verdict, Counterexample first, Sprt sprt) {
+            ClopperPearson.Interval interval, String verdict, Counterexample first, Sprt sprt, List<String> neverValued) {
         public boolean holds() {
             return verdict.equals("holds");
         }
@@ -133,6 +138,7 @@ public final class Verification {
         int violated = 0;
         int open = 0;
         int notEvaluated = 0;
+        Set<String> neverValued = new LinkedHashSet<>();
         Counterexample first = null;
         for (int i = 0; i < runs.size(); i++) {
             RequirementResult r = runs.get(i).requirements().get(k);
@@ -145,7 +151,10 @@ public final class Verification {
                     }
                 }
                 case OPEN -> open++;
-                case NOT_EVALUATED -> notEvaluated++;
+                case NOT_EVALUATED -> {
+                    notEvaluated++;
+                    neverValued.addAll(r.neverValued());
+                }
                 default -> {
                 }
             }
@@ -163,7 +172,7 @@ public final class Verification {
         } else {
             verdict = violated > 0 ? "violated" : "holds";
         }
-        return new Check(req, runs.size(), violated, open, notEvaluated, ci, verdict, first, sprt);
+        return new Check(req, runs.size(), violated, open, notEvaluated, ci, verdict, first, sprt, List.copyOf(neverValued));
     }
 
     /** Each policy's coverage over the runs it made (a sequential check: as many as its test needed). */
@@ -268,20 +277,21 @@ public final class Verification {
         return b.toString();
     }
 
-    private static String verdictText(Check c) {
+    /** The verdict as the table says it: with the sequential test's runs, open ends and runs never evaluated. */
+    public static String verdictText(Check c) {
         String v = switch (c.verdict()) {
-            case "not-evaluated" -> "never evaluated";
+            case "not-evaluated" -> "never evaluated: no value for " + String.join(", ", c.neverValued());
             default -> c.verdict();
         };
         if (c.sprt() != null) {
-            v += c.sprt().decision() == Sprt.Decision.UNDECIDED ? " after " + c.sprt().runs() + " runs"
+            v += c.sprt().decision() == Sprt.Decision.UNDECIDED ? " after " + c.sprt().runs() + (c.sprt().runs() == 1 ? " run" : " runs")
                     : " (SPRT, " + c.sprt().runs() + " runs)";
         }
         if (c.open() > 0 && c.violated() < c.runs()) {
             v += ", open at the end in " + c.open();
         }
         if (c.notEvaluated() > 0 && !c.verdict().equals("not-evaluated")) {
-            v += ", never evaluated in " + c.notEvaluated();
+            v += ", never evaluated in " + c.notEvaluated() + " (no value for " + String.join(", ", c.neverValued()) + ")";
         }
         return v;
     }

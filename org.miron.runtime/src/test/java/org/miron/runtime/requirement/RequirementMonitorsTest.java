@@ -90,6 +90,29 @@ public class RequirementMonitorsTest {
         }
     }
 
+    /**
+     * A bound past any run (within 99999999999999999999 hours is Long.MAX_VALUE ms in the generated
+     * file) is a window the run never closes: open at the end, or violated inside it, never an overflow.
+     */
+    @Test
+    public void aBoundPastAnyRunIsAWindowThatNeverClosesNotAnOverflow() {
+        RequirementMonitors m = Traces.monitors(always(implies(is("a"), eventually(Long.MAX_VALUE, is("b")))),
+                eventually(Long.MAX_VALUE, is("b")), temporal("always", Long.MAX_VALUE, x("<", 5)));
+        m.context(0, "a", false);
+        m.context(0, "b", false);
+        m.context(0, "x", 1.0);
+        m.context(1000, "a", true);
+        m.context(2000, "x", 7.0);
+        m.context(2500, "b", true); // met: a's obligation closes, b's window never does
+        m.context(3000, "a", false);
+        m.context(3000, "b", false);
+        m.context(4000, "a", true);
+        List<RequirementResult> r = m.finish(5000);
+        assertEquals(List.of("open", "holds", "violated"), Traces.verdicts(r));
+        assertEquals(4000, r.get(0).openSinceMs());
+        assertEquals(2000, r.get(2).firstViolation().timeMs());
+    }
+
     @Test
     public void simultaneousChangesAreTakenTogetherWhateverTheirOrder() {
         // at 1000 both x and the mode change: x > 5 implies fast never sees x high while slow
