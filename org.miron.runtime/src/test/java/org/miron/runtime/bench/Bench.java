@@ -82,7 +82,12 @@ public final class Bench {
                 floor.measured() ? String.format("%9.3f %9.3f  (%s)", floor.p50Ms, floor.p99Ms, floor.versions)
                         : "not measured: " + floor.notMeasured);
         if (py.available()) {
-            EndToEnd.pyDriven(models.get("intralogistics"), py, 300, 1000, floor);
+            EndToEnd.pyDriven(models.get("intralogistics"), py, 300, 1000, floor, EndToEnd.Between.SOCKETS);
+            // The steady state (the JIT compiles the bus path only after some thousands of messages):
+            // over sockets, on the local link (miron run's), and JeroMQ's own part of the path.
+            for (EndToEnd.Between b : EndToEnd.Between.values()) {
+                EndToEnd.pyDriven(models.get("intralogistics"), py, 5000, 2000, floor, b);
+            }
         }
         for (String backend : backends) {
             boolean fast = backend.equals("native");

@@ -153,26 +153,58 @@ final class EndToEnd {
         }
     }
 
+    /** What stands between zmq_path.py's pyzmq publisher and subscriber in {@link #pyDriven}. */
+    enum Between {
+        /** broker and engine in this JVM over loopback sockets, as separate processes talk */
+        SOCKETS("broker + engine over sockets"),
+        /** the engine on the broker's local link, as in miron run */
+        LOCAL("broker + engine on its local link"),
+        /** the broker alone, a quick handler on its local link answering each estimate: JeroMQ's part */
+        ECHO("broker + in-process echo (JeroMQ alone)");
+
+        final String label;
+
+        Between(String label) {
+            this.label = label;
+        }
+    }
+
     /**
-     * The same broker, engine and skill mock in this JVM, driven from outside by zmq_path.py's pyzmq
-     * publisher and subscriber: the publisher and subscriber of the libzmq floor, so that the two
-     * differ only in what stands between them.
+     * The broker (with, in this JVM, the engine and skill mock, or an echo) driven from outside by
+     * zmq_path.py's pyzmq publisher and subscriber: the publisher and subscriber of the libzmq floor,
+     * so that the two differ only in what stands between them.
      */
-    static void pyDriven(Path ioJson, ZmqPath py, int warm, int rounds, ZmqPath.Figures floor) throws Exception {
+    static void pyDriven(Path ioJson, ZmqPath py, int warm, int rounds, ZmqPath.Figures floor, Between between) throws Exception {
         Endpoints ep = Endpoints.freeLoopback();
         EngineOptions o = new EngineOptions(ioJson).endpoints(ep);
         o.backend = "native";
         try (Broker broker = new Broker(ep).start();
                 SkillInterfaceMock skills = new SkillInterfaceMock(ep.skill(), ep.skillEvents(), SkillTable.defaults()).start();
-                Engine engine = Engine.create(o).start()) {
+                AutoCloseable middle = middle(broker, o, between)) {
             ZmqPath.Figures f = py.drive(ep.busIn(), ep.busOut(), warm, rounds);
-            String label = "input -> variant, pyzmq driver (" + rounds + ")";
+            String label = "input -> variant, pyzmq driver, " + between.label + " (" + rounds + ", " + warm + " warm-up)";
             if (!f.measured()) {
                 System.out.printf("%-60s %-9s not measured: %s%n", label, "native", f.notMeasured);
                 return;
             }
             System.out.printf("%-60s %-9s %9.3f %9.3f  %s%n", label, "native", f.p50Ms, f.p99Ms, floor.ratios(f.p50Ms, f.p99Ms));
         }
+    }
+
+    private static AutoCloseable middle(Broker broker, EngineOptions o, Between between) throws Exception {
+        if (between == Between.ECHO) {
+            org.miron.runtime.bus.Bus[] echo = new org.miron.runtime.bus.Bus[1];
+            echo[0] = broker.local().open("echo", List.of(Topics.ESTIMATE), (org.miron.runtime.bus.Bus.QuickHandler) (t, b) -> {
+                boolean low = new String(b, StandardCharsets.UTF_8).contains("0.2"); // the driver's two values: 0.2, 0.9
+                echo[0].publish(Topics.VARIANT_PREFIX + "task", "{\"varpoint\":\"task\",\"value\":\""
+                        + (low ? "dock" : "pickDeliverCharge") + "\",\"seq\":0,\"time\":" + System.currentTimeMillis() + "}");
+            }).start();
+            return echo[0];
+        }
+        if (between == Between.LOCAL) {
+            o.bus = broker.local();
+        }
+        return Engine.create(o).start();
     }
 
     /** How many rounds took over 1, 2, 4 and 8 ms: a tail of whole scheduler ticks (4 ms) shows up here. */
