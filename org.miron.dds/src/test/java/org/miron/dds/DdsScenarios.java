@@ -302,12 +302,18 @@ public final class DdsScenarios {
                     other.endpoint("writer", "power", "rt/power_status", "truncated my_robot_msgs/PowerStatus", "");
                     other.awaitMatched("power");
                     long contexts = b.count("contextsIn");
-                    other.write("power", "{\"header\":{\"frame_id\":\"x\"}}");
+                    // Written again until one arrives: "matched" on the writer's side does not mean
+                    // the bridge's reader has matched it back yet, and a sample before that is lost.
                     long end = System.currentTimeMillis() + TIMEOUT;
+                    long nextWrite = 0;
                     while (b.count("malformedInput") < 1 && System.currentTimeMillis() < end) {
+                        if (System.currentTimeMillis() >= nextWrite) {
+                            other.write("power", "{\"header\":{\"frame_id\":\"x\"}}");
+                            nextWrite = System.currentTimeMillis() + 1000;
+                        }
                         Thread.sleep(20);
                     }
-                    assertEquals("the undecodable PowerStatus is counted", 1, b.count("malformedInput"));
+                    assertTrue("the undecodable PowerStatus is counted", b.count("malformedInput") >= 1);
                     assertEquals("and dropped", contexts, b.count("contextsIn"));
                 }
             }
