@@ -3,7 +3,6 @@ package org.miron.cli.run;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -82,7 +81,10 @@ final class GeneratedCache {
         } else {
             try {
                 Files.move(staged, entry, StandardCopyOption.ATOMIC_MOVE);
-            } catch (AtomicMoveNotSupportedException | java.nio.file.FileAlreadyExistsException e) {
+            } catch (java.nio.file.FileSystemException e) {
+                if (!Files.isDirectory(entry)) {
+                    throw e;
+                }
                 delete(staged); // the same generation, stored by a run at the same time
             }
         }

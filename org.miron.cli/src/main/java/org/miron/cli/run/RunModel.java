@@ -86,7 +86,8 @@ public final class RunModel implements AutoCloseable {
                     throw new Refused(2, "miron run: error: cannot create a folder to generate into: " + e2.getMessage());
                 }
             }
-            dir = generateInto(model, staged, err);
+            generateInto(model, staged, err);
+            dir = staged;
             if (!temporary) {
                 try {
                     dir = cache.store(model, staged, read(staged));
@@ -125,7 +126,7 @@ public final class RunModel implements AutoCloseable {
     }
 
     /** {@code miron generate} into dir in a JVM of its own; the diagnostics go to err. */
-    private static Path generateInto(Path model, Path dir, PrintWriter err) throws Refused {
+    private static void generateInto(Path model, Path dir, PrintWriter err) throws Refused {
         int status;
         try {
             status = GenerationProcess.run(model, dir, dir.resolve(INPUTS), err);
@@ -141,7 +142,6 @@ public final class RunModel implements AutoCloseable {
             GeneratedCache.delete(dir);
             throw new Refused(status == 1 ? 1 : 2, model + ": the model has errors: nothing runs");
         }
-        return dir;
     }
 
     private static final String INPUTS = "inputs.list";

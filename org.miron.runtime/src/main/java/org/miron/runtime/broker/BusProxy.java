@@ -193,21 +193,24 @@ final class BusProxy implements Runnable {
         return true;
     }
 
-    /** Caches, forwards and delivers one message, then what quick handlers published meanwhile. */
+    /** One message, then what quick handlers published meanwhile. */
     private void dispatch(List<byte[]> frames, String from) {
-        admit(frames, from);
-        send(xpub, frames);
-        deliver(frames);
+        pass(frames, from);
         drainNested();
     }
 
     private void drainNested() {
         List<byte[]> next;
         while (!delivering && (next = nested.poll()) != null) {
-            admit(next, null);
-            send(xpub, next);
-            deliver(next);
+            pass(next, null);
         }
+    }
+
+    /** Caches, forwards on the XPUB and delivers to the local subscribers one message. */
+    private void pass(List<byte[]> frames, String from) {
+        admit(frames, from);
+        send(xpub, frames);
+        deliver(frames);
     }
 
     /** Caches a valid message; an invalid one is forwarded all the same (subscribers count bad input themselves). */

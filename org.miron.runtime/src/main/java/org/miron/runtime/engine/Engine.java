@@ -81,8 +81,8 @@ public final class Engine implements AutoCloseable {
         running = true;
         BusLink link = options.bus != null ? options.bus : BusLink.sockets(options.busIn, options.busOut);
         // onMessage decodes into the input state and wakes the solve loop: quick
-        bus = link.open("engine", List.of("roqme.", Topics.OVERRIDE_PREFIX), (Bus.QuickHandler) this::onMessage).onBrokerSync(this::onBrokerSync)
-                .start();
+        bus = link.open("engine", List.of("roqme.", Topics.OVERRIDE_PREFIX), (Bus.QuickHandler) this::onMessage)
+                .onBrokerSync(this::onBrokerSync).start();
         sender = new ParameterSender(options.request, options.ackTimeoutMs, options.backoffMinMs,
                 options.backoffMaxMs, new SenderReports()).start();
         loop = new Thread(this::solveLoop, "engine-solve");

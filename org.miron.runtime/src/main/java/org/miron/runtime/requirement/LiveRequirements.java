@@ -29,11 +29,12 @@ import org.miron.runtime.bus.Topics;
  * each at its arrival on the component's own clock (ms since it started), and told every
  * violation and met-again on {@code miron.requirement}, its counts on
  * {@code miron.requirement.status}. The bus thread only queues what arrives; one monitor thread
- * decodes and feeds (the monitors are not thread-safe) and advances time every
- * {@link #TICK_MS} so that a deadline passes without a message. Bad bus input is counted and
+ * takes it every {@link #BATCH_MS}, decodes and feeds it (the monitors are not thread-safe) and
+ * advances time then, so that a deadline passes without a message. Bad bus input is counted and
  * logged once per kind, never fatal.
  */
 public final class LiveRequirements implements AutoCloseable {
+    /** The shortest interval of {@code miron.requirement.status}. */
     public static final long TICK_MS = 100;
     /** How long the monitors let bus input gather before they take it. */
     static final long BATCH_MS = 20;
